@@ -1,0 +1,97 @@
+#include "drivers/gps/fix_assembler.hpp"
+
+#include <type_traits>
+
+namespace sinu::drivers {
+
+namespace {
+
+std::optional<UtcMs> time_of(const NmeaMessage& msg) {
+  return std::visit(
+      [](const auto& m) -> std::optional<UtcMs> {
+        if constexpr (requires { m.utc_ms; }) return m.utc_ms;
+        else return std::nullopt;
+      },
+      msg);
+}
+
+}  // namespace
+
+void FixAssembler::merge(const NmeaMessage& msg) {
+  std::visit(
+      [this](const auto& m) {
+        using T = std::decay_t<decltype(m)>;
+        GpsFix& f = open_;
+        if constexpr (std::is_same_v<T, GgaMessage>) {
+          f.has_gga = true;
+          f.quality = m.quality;
+          if (m.lat_deg) f.lat_deg = m.lat_deg;
+          if (m.lon_deg) f.lon_deg = m.lon_deg;
+          f.alt_msl_m = m.alt_msl_m;
+          f.geoid_sep_m = m.geoid_sep_m;
+          f.sats = m.sats;
+          if (m.hdop) f.hdop = m.hdop;
+        } else if constexpr (std::is_same_v<T, RmcMessage>) {
+          f.has_rmc = true;
+          f.rmc_valid = m.valid;
+          if (!f.has_gga) {
+            f.lat_deg = m.lat_deg;
+            f.lon_deg = m.lon_deg;
+          }
+          if (m.speed_m_s) f.speed_m_s = m.speed_m_s;
+          if (m.course_deg) f.course_deg = m.course_deg;
+          if (m.date) f.date = m.date;
+        } else if constexpr (std::is_same_v<T, VtgMessage>) {
+          if (!f.speed_m_s) f.speed_m_s = m.speed_m_s;
+          if (!f.course_deg) f.course_deg = m.course_deg;
+        } else if constexpr (std::is_same_v<T, GsaMessage>) {
+          f.pdop = m.pdop;
+          f.vdop = m.vdop;
+          if (!f.hdop) f.hdop = m.hdop;
+        } else if constexpr (std::is_same_v<T, GstMessage>) {
+          f.has_gst = m.sigma_lat_m || m.sigma_lon_m;
+          f.sigma_lat_m = m.sigma_lat_m;
+          f.sigma_lon_m = m.sigma_lon_m;
+          f.sigma_alt_m = m.sigma_alt_m;
+        } else if constexpr (std::is_same_v<T, ZdaMessage>) {
+          if (m.date) f.date = m.date;
+        }
+      },
+      msg);
+}
+
+bool FixAssembler::emit(GpsFix& out) {
+  if (!is_open_ || !has_time_) {
+    is_open_ = false;
+    return false;
+  }
+  out = open_;
+  is_open_ = false;
+  cycle_end_ = last_type_;
+  ++epochs_;
+  return true;
+}
+
+bool FixAssembler::add(const NmeaMessage& msg, double arrival_s, GpsFix& out) {
+  const std::optional<UtcMs> t = time_of(msg);
+  bool emitted = false;
+  if (is_open_ && t && has_time_ && *t != open_.utc_ms) emitted = emit(out);
+  if (!is_open_) {
+    open_ = GpsFix{};
+    open_.arrival_s = arrival_s;
+    is_open_ = true;
+    has_time_ = false;
+  }
+  if (t && !has_time_) {
+    open_.utc_ms = *t;
+    has_time_ = true;
+  }
+  merge(msg);
+  last_type_ = msg.index();
+  if (!emitted && msg.index() == cycle_end_ && has_time_) emitted = emit(out);
+  return emitted;
+}
+
+bool FixAssembler::flush(GpsFix& out) { return emit(out); }
+
+}  // namespace sinu::drivers

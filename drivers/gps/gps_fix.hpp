@@ -1,0 +1,35 @@
+#pragma once
+// One GPS epoch: everything the receiver said about the same UTC instant,
+// gathered from GGA, RMC, VTG, GSA, GST and ZDA.
+#include <optional>
+
+#include "drivers/gps/nmea_messages.hpp"
+
+namespace sinu::drivers {
+
+struct GpsFix {
+  double arrival_s = 0.0;  // board monotonic time the epoch's first sentence arrived
+  UtcMs utc_ms = 0;        // the instant the fix refers to (UTC time of day)
+  std::optional<UtcDate> date;
+  std::optional<double> lat_deg, lon_deg;
+  std::optional<double> alt_msl_m, geoid_sep_m;
+  int quality = 0;  // GGA fix quality (0 = no fix)
+  bool rmc_valid = false;
+  std::optional<int> sats;
+  std::optional<double> hdop, pdop, vdop;
+  std::optional<double> speed_m_s, course_deg;
+  std::optional<double> sigma_lat_m, sigma_lon_m, sigma_alt_m;  // from GST
+  bool has_gga = false, has_rmc = false, has_gst = false;
+
+  /// A usable position: GGA says fixed, or (without GGA) RMC says valid.
+  bool has_position() const {
+    return lat_deg && lon_deg && (has_gga ? quality > 0 : rmc_valid);
+  }
+  /// WGS-84 ellipsoidal height = altitude above MSL + geoid separation.
+  std::optional<double> ellipsoid_height_m() const {
+    if (!alt_msl_m) return std::nullopt;
+    return *alt_msl_m + geoid_sep_m.value_or(0.0);
+  }
+};
+
+}  // namespace sinu::drivers

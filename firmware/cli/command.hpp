@@ -1,0 +1,15 @@
+#pragma once
+// Each mode adds its subcommand to the CLI and, when chosen, sets the action
+// main() runs after parsing. Actions return an exit code (cli/exit_codes.hpp).
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace sinu::app {
+
+using Action = std::function<int()>;
+
+void add_inspect_command(CLI::App& app, Action& action);
+/// Modes whose issues have not landed: they print which issue and exit 2.
+void add_pending_commands(CLI::App& app, Action& action);
+
+}  // namespace sinu::app

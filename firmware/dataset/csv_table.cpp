@@ -1,0 +1,204 @@
+#include "firmware/dataset/csv_table.hpp"
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+
+namespace sinu::io {
+
+namespace {
+
+constexpr std::size_t kWriteBuffer = 256 * 1024;
+constexpr std::size_t kMaxRowChars = kMaxCsvColumns * 40;  // one formatted row fits easily
+
+std::string quoted(std::string_view s) {
+  constexpr std::size_t kShown = 40;
+  std::string out = "'";
+  out += s.substr(0, kShown);
+  if (s.size() > kShown) out += "...";
+  return out + "'";
+}
+
+std::string header_of(const CsvSchema& schema) {
+  std::string h;
+  for (std::size_t i = 0; i < schema.columns.size(); ++i) {
+    if (i) h += ',';
+    h += schema.columns[i];
+  }
+  return h;
+}
+
+}  // namespace
+
+void CsvRow::clear(std::size_t n_columns) {
+  present = 0;
+  for (std::size_t i = 0; i < n_columns; ++i) value[i] = std::numeric_limits<double>::quiet_NaN();
+}
+
+bool parse_double(std::string_view f, double& out) {
+  const char* first = f.data();
+  const char* last = f.data() + f.size();
+  const auto [p, ec] = std::from_chars(first, last, out);
+  if (ec == std::errc{} && p == last) return true;
+  // Forms strtod accepts that from_chars does not: leading '+', leading
+  // blanks, hexadecimal floats, out-of-range values (-> +-inf / 0).
+  char buf[96];
+  if (f.empty() || f.size() >= sizeof buf) return false;
+  std::memcpy(buf, first, f.size());
+  buf[f.size()] = '\0';
+  char* end = nullptr;
+  out = std::strtod(buf, &end);
+  return end == buf + f.size();
+}
+
+CsvReader::CsvReader(const CsvSchema& schema) : schema_(schema) {}
+
+ReadStatus CsvReader::fail(std::size_t line, std::size_t column, std::string message) {
+  error_ = Diagnostic{path_, line, column, std::move(message)};
+  return ReadStatus::Error;
+}
+
+bool CsvReader::open(const std::string& path) {
+  path_ = path;
+  rows_ = 0;
+  if (!lines_.open(path)) {
+    fail(0, 0, std::string("cannot open: ") + std::strerror(errno));
+    return false;
+  }
+  std::string_view line;
+  const std::string expected = header_of(schema_);
+  switch (lines_.next(line)) {
+    case LineReader::Status::Line: break;
+    case LineReader::Status::End: fail(0, 0, "empty file: expected the header '" + expected + "'"); return false;
+    default: fail(1, 0, "cannot read the header line"); return false;
+  }
+  if (line.size() >= 3 && static_cast<unsigned char>(line[0]) == 0xEF) line.remove_prefix(3);  // UTF-8 BOM
+  if (line != expected) {
+    // Point at the first character that differs.
+    std::size_t col = 0;
+    while (col < line.size() && col < expected.size() && line[col] == expected[col]) ++col;
+    fail(1, col + 1, "missing or wrong header: expected '" + expected + "', found " + quoted(line));
+    return false;
+  }
+  return true;
+}
+
+ReadStatus CsvReader::next(CsvRow& row) {
+  std::string_view line;
+  switch (lines_.next(line)) {
+    case LineReader::Status::Line: break;
+    case LineReader::Status::End: return ReadStatus::End;
+    case LineReader::Status::TooLong: return fail(lines_.line_number() + 1, 0, "line too long");
+    case LineReader::Status::IoError: return fail(lines_.line_number() + 1, 0, "read error");
+  }
+  const std::size_t n = schema_.columns.size();
+  const std::size_t line_no = lines_.line_number();
+  row.clear(n);
+  std::size_t pos = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t comma = line.find(',', pos);
+    const bool last = i + 1 == n;
+    if (!last && comma == std::string_view::npos)
+      return fail(line_no, line.size() + 1,
+                  "expected " + std::to_string(n) + " fields, found " + std::to_string(i + 1));
+    if (last && comma != std::string_view::npos) {
+      std::size_t found = n;
+      for (std::size_t c = comma; c != std::string_view::npos; c = line.find(',', c + 1)) ++found;
+      return fail(line_no, comma + 1, "expected " + std::to_string(n) + " fields, found " + std::to_string(found));
+    }
+    const std::string_view field = line.substr(pos, last ? std::string_view::npos : comma - pos);
+    const std::string_view name = schema_.columns[i];
+    if (!field.empty()) {
+      double v = 0.0;
+      if (!parse_double(field, v))
+        return fail(line_no, pos + 1, "field '" + std::string(name) + "': not a number " + quoted(field));
+      if (!std::isfinite(v))
+        return fail(line_no, pos + 1, "field '" + std::string(name) + "': not finite " + quoted(field));
+      row.set(i, v);
+    } else if (i == 0) {
+      return fail(line_no, 1, "field 't': empty, every row needs a time");
+    }
+    pos = comma + 1;
+  }
+  if (rows_ > 0 && !(row.t() > last_t_)) {
+    char msg[128];
+    std::snprintf(msg, sizeof msg, "field 't': time not increasing (%.9g after %.9g)", row.t(), last_t_);
+    return fail(line_no, 1, msg);
+  }
+  last_t_ = row.t();
+  ++rows_;
+  return ReadStatus::Row;
+}
+
+CsvWriter::CsvWriter(const CsvSchema& schema) : schema_(schema), buffer_(new char[kWriteBuffer]) {}
+
+CsvWriter::~CsvWriter() { close(); }
+
+bool CsvWriter::open(const std::string& path) {
+  error_ = Diagnostic{path, 0, 0, {}};
+  file_ = std::fopen(path.c_str(), "wb");
+  if (!file_) {
+    error_.message = std::string("cannot create: ") + std::strerror(errno);
+    return false;
+  }
+  const std::string header = header_of(schema_) + '\n';
+  std::memcpy(buffer_.get(), header.data(), header.size());
+  used_ = header.size();
+  return true;
+}
+
+bool CsvWriter::write(const CsvRow& row) {
+  if (!file_) return false;
+  if (kWriteBuffer - used_ < kMaxRowChars && !flush()) return false;
+  char* out = buffer_.get() + used_;
+  char* const end = buffer_.get() + kWriteBuffer;
+  for (std::size_t i = 0; i < schema_.columns.size(); ++i) {
+    if (i) *out++ = ',';
+    if (!row.has(i)) continue;
+    const ColumnFormat f = format_[i];
+    std::to_chars_result r{};
+    switch (f.style) {
+      case ColumnFormat::Style::Shortest: r = std::to_chars(out, end, row.value[i]); break;
+      case ColumnFormat::Style::Fixed:
+        r = std::to_chars(out, end, row.value[i], std::chars_format::fixed, f.precision);
+        break;
+      case ColumnFormat::Style::Significant:
+        r = std::to_chars(out, end, row.value[i], std::chars_format::general, f.precision);
+        break;
+    }
+    if (r.ec != std::errc{}) {
+      error_.message = "value too long to format";
+      return false;
+    }
+    out = r.ptr;
+  }
+  *out++ = '\n';
+  used_ = static_cast<std::size_t>(out - buffer_.get());
+  return true;
+}
+
+bool CsvWriter::flush() {
+  if (used_ == 0) return true;
+  if (std::fwrite(buffer_.get(), 1, used_, file_) != used_) {
+    error_.message = std::string("write failed: ") + std::strerror(errno);
+    return false;
+  }
+  used_ = 0;
+  return true;
+}
+
+bool CsvWriter::close() {
+  if (!file_) return error_.message.empty();
+  bool ok = flush();
+  if (std::fclose(file_) != 0 && ok) {
+    error_.message = std::string("close failed: ") + std::strerror(errno);
+    ok = false;
+  }
+  file_ = nullptr;
+  return ok;
+}
+
+}  // namespace sinu::io

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Installs everything sinu needs on a fresh Debian bookworm machine, from
+# Debian's packages only. Idempotent and non-interactive; run as root (or
+# with sudo available). Usage: tools/setup.sh [--cross] [--reference]
+#   --cross      also the aarch64/armhf cross compilers and qemu-user
+#   --reference  also the tools that regenerate test fixtures (pywt, Octave)
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  libeigen3-dev            # Eigen 3.4: fixed-size matrices in the estimator
+  libgpiod-dev             # libgpiod 1.6 (v1 API): data-ready interrupts
+  libgtest-dev libgmock-dev
+  libbenchmark-dev
+  nlohmann-json3-dev libcli11-dev libfmt-dev
+  clang libclang-rt-14-dev # libFuzzer targets, sanitizer runtimes
+  python3 python3-numpy python3-matplotlib   # report plots (tools/*.py via /usr/bin/python3)
+)
+for arg in "$@"; do
+  case "$arg" in
+    --cross) packages+=(g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user) ;;
+    --reference) packages+=(python3-pywt python3-scipy octave octave-signal) ;;
+    *) echo "setup.sh: unknown option $arg" >&2; exit 2 ;;
+  esac
+done
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup.sh: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+echo "setup.sh: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
