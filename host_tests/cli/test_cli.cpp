@@ -1,0 +1,85 @@
+// The sinu command: help, exit codes, and inspect dataset's errors.
+#include <gtest/gtest.h>
+
+#include "host_tests/support/run_process.hpp"
+#include "host_tests/support/shared_data.hpp"
+#include "host_tests/support/temp_dir.hpp"
+
+using sinu::test::run_sinu;
+
+namespace {
+const std::string kHeader = "t,ax,ay,az,gx,gy,gz,mx,my,mz,temp\n";
+}
+
+TEST(Cli, HelpListsEverySubcommand) {
+  const auto r = run_sinu({"--help"});
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* sub : {"simulate", "denoise", "calibrate", "replay", "diagnose", "inspect", "record", "convert", "fly"})
+    EXPECT_NE(r.out.find(sub), std::string::npos) << sub;
+}
+
+TEST(Cli, EverySubcommandHasHelp) {
+  for (const char* sub : {"simulate", "denoise", "calibrate", "replay", "diagnose", "inspect", "record", "convert", "fly"}) {
+    const auto r = run_sinu({sub, "--help"});
+    EXPECT_EQ(r.exit_code, 0) << sub;
+    EXPECT_NE(r.out.find("Usage"), std::string::npos) << sub;
+  }
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+  EXPECT_EQ(run_sinu({}).exit_code, 2);
+  EXPECT_EQ(run_sinu({"no-such-mode"}).exit_code, 2);
+  EXPECT_EQ(run_sinu({"inspect", "dataset"}).exit_code, 2);  // DIR missing
+  EXPECT_EQ(run_sinu({"inspect", "dataset", "a", "--bogus"}).exit_code, 2);
+}
+
+TEST(Cli, InspectMalformedDatasetExitsOneWithFileLineColumn) {
+  sinu::test::TempDir dir;
+  const auto imu = dir.write("imu.csv", kHeader + "1.0,0,0,-9.8,0,0,0,,,,\n1.025,0,0,-9.8,0,zz,0,,,,\n");
+  const auto r = run_sinu({"inspect", "dataset", dir.path().string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find(imu + ":3:18: field 'gy': not a number 'zz'"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << "no summary for a dataset that failed validation";
+}
+
+TEST(Cli, InspectReportsMissingImuAndMissingFolder) {
+  sinu::test::TempDir dir;
+  auto r = run_sinu({"inspect", "dataset", dir.path().string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("imu.csv: missing"), std::string::npos) << r.err;
+  r = run_sinu({"inspect", "dataset", (dir.path() / "nope").string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("not a directory"), std::string::npos) << r.err;
+}
+
+TEST(Cli, InspectSummarisesAValidDataset) {
+  sinu::test::TempDir dir;
+  std::string imu = kHeader;
+  for (int i = 0; i < 400; ++i) {
+    if (i == 200) continue;  // one dropped sample: a gap of 2 periods
+    imu += std::to_string(50.0 + 0.025 * i) + ",0,0,-9.8,0,0,0,,,,25\n";
+  }
+  dir.write("imu.csv", imu);
+  dir.write("gps.nmea",
+            "50.05,$GNGGA,193400.50,4005.7976080,N,10508.8468980,W,4,21,,1601.474,M,-21.387,M,,*58\n"
+            "50.06,$GNGGA,193400.5*00\n");
+  const auto r = run_sinu({"inspect", "dataset", dir.path().string(), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"count\": 399"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"gaps\": 1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"corrupt\": 1"), std::string::npos) << r.out;
+}
+
+TEST(Cli, PendingModesSayWhichIssueAndExitTwo) {
+  const auto r = run_sinu({"fly"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("not available yet"), std::string::npos);
+  EXPECT_TRUE(r.out.empty()) << "never made-up output";
+}
+
+TEST(Cli, InspectRealDrive) {
+  SINU_REQUIRE_SHARED(dir, "data/real/drive_0708");
+  const auto r = run_sinu({"inspect", "dataset", dir});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("54860 rows"), std::string::npos) << r.out;
+}

@@ -1,0 +1,58 @@
+// LineReader: LF and CR LF endings, a last line without LF, long lines.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "firmware/dataset/line_reader.hpp"
+#include "host_tests/support/temp_dir.hpp"
+
+using sinu::io::LineReader;
+
+TEST(LineReader, AcceptsLfAndCrLfAndAMissingFinalNewline) {
+  sinu::test::TempDir dir;
+  const auto path = dir.write("x.txt", "a,b\r\nc\n\nlast");
+  LineReader r;
+  ASSERT_TRUE(r.open(path));
+  std::string_view line;
+  ASSERT_EQ(r.next(line), LineReader::Status::Line);
+  EXPECT_EQ(line, "a,b");
+  ASSERT_EQ(r.next(line), LineReader::Status::Line);
+  EXPECT_EQ(line, "c");
+  ASSERT_EQ(r.next(line), LineReader::Status::Line);
+  EXPECT_EQ(line, "");
+  ASSERT_EQ(r.next(line), LineReader::Status::Line);
+  EXPECT_EQ(line, "last");
+  EXPECT_EQ(r.line_number(), 4u);
+  EXPECT_EQ(r.next(line), LineReader::Status::End);
+}
+
+TEST(LineReader, LinesAcrossManyRefillsStayIntact) {
+  // 300 k lines of varying length cross the 256 KiB refill boundary many times.
+  sinu::test::TempDir dir;
+  std::string text;
+  for (int i = 0; i < 300000; ++i) text += std::to_string(i) + std::string(static_cast<std::size_t>(i % 7), 'x') + "\n";
+  const auto path = dir.write("big.txt", text);
+  LineReader r;
+  ASSERT_TRUE(r.open(path));
+  std::string_view line;
+  for (int i = 0; i < 300000; ++i) {
+    ASSERT_EQ(r.next(line), LineReader::Status::Line) << i;
+    ASSERT_EQ(line, std::to_string(i) + std::string(static_cast<std::size_t>(i % 7), 'x'));
+  }
+  EXPECT_EQ(r.next(line), LineReader::Status::End);
+}
+
+TEST(LineReader, ReportsALineLongerThanItsBound) {
+  sinu::test::TempDir dir;
+  const auto path = dir.write("long.txt", "ok\n" + std::string(600 * 1024, 'y') + "\nafter\n");
+  LineReader r(1024);
+  ASSERT_TRUE(r.open(path));
+  std::string_view line;
+  ASSERT_EQ(r.next(line), LineReader::Status::Line);
+  EXPECT_EQ(r.next(line), LineReader::Status::TooLong);
+}
+
+TEST(LineReader, OpenFailsOnMissingFile) {
+  LineReader r;
+  EXPECT_FALSE(r.open("/nonexistent/file.csv"));
+}

@@ -1,0 +1,145 @@
+// NMEA sentence framing, field decoding and epoch assembly.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "drivers/gps/fix_assembler.hpp"
+#include "drivers/gps/nmea_parser.hpp"
+
+using namespace sinu::drivers;
+
+namespace {
+
+/// Builds "$body*hh" with a correct checksum, computed independently here.
+std::string with_checksum(const std::string& body, bool lower_case = false) {
+  unsigned sum = 0;
+  for (char c : body) sum ^= static_cast<unsigned char>(c);
+  char hex[4];
+  std::snprintf(hex, sizeof hex, lower_case ? "%02x" : "%02X", sum);
+  return "$" + body + "*" + hex;
+}
+
+}  // namespace
+
+TEST(NmeaSentence, ChecksumAcceptsEitherCaseAndRejectsMismatch) {
+  // Checksum of a real u-blox sentence as published in the receiver manual.
+  EXPECT_EQ(check_sentence("$GPGGA,092725.00,4717.11399,N,00833.91590,E,1,08,1.01,499.6,M,48.0,M,,*5B"),
+            SentenceCheck::Ok);
+  const std::string body = "GNRMC,193400.50,A,4005.7976080,N,10508.8468980,W,0.020,348.69,080725,,,R";
+  EXPECT_EQ(check_sentence(with_checksum(body)), SentenceCheck::Ok);
+  EXPECT_EQ(check_sentence(with_checksum(body, true)), SentenceCheck::Ok);
+  std::string bad = with_checksum(body);
+  bad[10] = '9';  // one corrupted digit
+  EXPECT_EQ(check_sentence(bad), SentenceCheck::BadChecksum);
+}
+
+TEST(NmeaSentence, FramingErrors) {
+  EXPECT_EQ(check_sentence("GPGGA,1*00"), SentenceCheck::NoDollar);
+  EXPECT_EQ(check_sentence("$GPGGA,092725.00,4717.11399,N"), SentenceCheck::MissingChecksum);  // truncated
+  EXPECT_EQ(check_sentence("$GPGGA,0927*5"), SentenceCheck::MissingChecksum);
+  EXPECT_EQ(check_sentence(with_checksum("GPGGA,09\x01""27")), SentenceCheck::BadCharacter);
+  EXPECT_EQ(check_sentence(with_checksum("gpgga,1")), SentenceCheck::BadAddress);
+  EXPECT_EQ(check_sentence("$" + std::string(200, 'A') + "*00"), SentenceCheck::TooLong);
+}
+
+TEST(NmeaParser, DecodesGgaWithUnitsAndSigns) {
+  NmeaParser p;
+  NmeaMessage m;
+  ASSERT_EQ(p.parse(with_checksum("GNGGA,193400.50,4005.7976080,N,10508.8468980,W,4,21,,1601.474,M,-21.387,M,,"), m),
+            ParseResult::Message);
+  const auto& g = std::get<GgaMessage>(m);
+  EXPECT_EQ(*g.utc_ms, ((19 * 3600 + 34 * 60) + 0) * 1000 + 500);
+  // ddmm.mmmm -> degrees: 40 + 5.7976080/60, west negative.
+  EXPECT_NEAR(*g.lat_deg, 40.0 + 5.7976080 / 60.0, 1e-12);
+  EXPECT_NEAR(*g.lon_deg, -(105.0 + 8.8468980 / 60.0), 1e-12);
+  EXPECT_EQ(g.quality, 4);
+  EXPECT_EQ(*g.sats, 21);
+  EXPECT_FALSE(g.hdop.has_value()) << "an empty field is 'not available', never zero";
+  EXPECT_DOUBLE_EQ(*g.alt_msl_m, 1601.474);
+  EXPECT_DOUBLE_EQ(*g.geoid_sep_m, -21.387);
+}
+
+TEST(NmeaParser, DecodesRmcSpeedInMetresPerSecond) {
+  NmeaParser p;
+  NmeaMessage m;
+  ASSERT_EQ(p.parse(with_checksum("GPRMC,101520.40,A,3024.51234,N,11421.12345,E,77.75,123.4,220326,,,A"), m),
+            ParseResult::Message);
+  const auto& r = std::get<RmcMessage>(m);
+  EXPECT_TRUE(r.valid);
+  EXPECT_NEAR(*r.speed_m_s, 77.75 * 1852.0 / 3600.0, 1e-12);  // knots -> m/s by definition of the knot
+  EXPECT_DOUBLE_EQ(*r.course_deg, 123.4);
+  EXPECT_EQ(*r.date, (UtcDate{2026, 3, 22}));
+  EXPECT_EQ(r.mode, 'A');
+}
+
+TEST(NmeaParser, DecodesGstSigmas) {
+  NmeaParser p;
+  NmeaMessage m;
+  ASSERT_EQ(p.parse(with_checksum("GPGST,101520.40,1.2,0.9,0.7,35.0,0.85,0.72,1.9"), m), ParseResult::Message);
+  const auto& g = std::get<GstMessage>(m);
+  EXPECT_DOUBLE_EQ(*g.sigma_lat_m, 0.85);
+  EXPECT_DOUBLE_EQ(*g.sigma_lon_m, 0.72);
+  EXPECT_DOUBLE_EQ(*g.sigma_alt_m, 1.9);
+}
+
+TEST(NmeaParser, CountsEveryKindOfBadSentence) {
+  NmeaParser p;
+  NmeaMessage m;
+  EXPECT_EQ(p.parse(with_checksum("GPGGA,1015xx.40,3024.51234,N,11421.12345,E,1,8,1.0,45.3,M,0.0,M,,"), m),
+            ParseResult::Corrupt);
+  EXPECT_EQ(p.parse(with_checksum("GPGGA,101520.40,3024.51234,Q,11421.12345,E,1,8,1.0,45.3,M,0.0,M,,"), m),
+            ParseResult::Corrupt);  // hemisphere 'Q'
+  EXPECT_EQ(p.parse(with_checksum("GPGGA,101520.40,3024.5"), m), ParseResult::Corrupt);  // too few fields
+  EXPECT_EQ(p.parse("$GPGGA,101520.40*00", m), ParseResult::Corrupt);
+  EXPECT_EQ(p.parse("$GPGGA,101520.40", m), ParseResult::Corrupt);
+  EXPECT_EQ(p.parse(with_checksum("GPGSV,3,1,11,03,03,111,00"), m), ParseResult::Ignored);
+  EXPECT_EQ(p.parse(with_checksum("PUBX,00,1"), m), ParseResult::Ignored);
+  const NmeaCounters& c = p.counters();
+  EXPECT_EQ(c.malformed_field, 3u);
+  EXPECT_EQ(c.bad_checksum, 1u);
+  EXPECT_EQ(c.missing_checksum, 1u);
+  EXPECT_EQ(c.ignored, 2u);
+  EXPECT_EQ(c.good, 0u);
+  EXPECT_EQ(c.total(), 7u);
+}
+
+TEST(FixAssembler, GroupsSentencesOfOneEpochAndLearnsTheCycleEnd) {
+  NmeaParser p;
+  FixAssembler a;
+  NmeaMessage m;
+  GpsFix fix;
+  int emitted = 0;
+  auto feed = [&](const std::string& body, double t) {
+    ASSERT_EQ(p.parse(with_checksum(body), m), ParseResult::Message);
+    if (a.add(m, t, fix)) ++emitted;
+  };
+  feed("GNGGA,120000.00,4000.0000,N,10500.0000,W,1,10,0.9,100.0,M,-20.0,M,,", 10.05);
+  feed("GNRMC,120000.00,A,4000.0000,N,10500.0000,W,10.0,90.0,010126,,,A", 10.06);
+  feed("GNGST,120000.00,1.0,,,,0.5,0.6,1.5", 10.07);
+  EXPECT_EQ(emitted, 0) << "the first epoch ends only when the next one starts";
+  feed("GNGGA,120000.20,4000.0010,N,10500.0000,W,1,10,0.9,100.0,M,-20.0,M,,", 10.25);
+  ASSERT_EQ(emitted, 1);
+  EXPECT_EQ(fix.utc_ms, 12 * 3600 * 1000);
+  EXPECT_DOUBLE_EQ(fix.arrival_s, 10.05);
+  EXPECT_TRUE(fix.has_position());
+  EXPECT_DOUBLE_EQ(*fix.ellipsoid_height_m(), 80.0);
+  EXPECT_NEAR(*fix.speed_m_s, 10.0 * 1852.0 / 3600.0, 1e-12);
+  EXPECT_DOUBLE_EQ(*fix.sigma_lon_m, 0.6);
+  feed("GNRMC,120000.20,A,4000.0010,N,10500.0000,W,10.0,90.0,010126,,,A", 10.26);
+  feed("GNGST,120000.20,1.0,,,,0.5,0.6,1.5", 10.27);
+  EXPECT_EQ(emitted, 2) << "GST ended the previous epoch, so it ends this one at once";
+  EXPECT_EQ(fix.utc_ms, 12 * 3600 * 1000 + 200);
+  EXPECT_FALSE(a.flush(fix)) << "nothing left open";
+}
+
+TEST(FixAssembler, NoFixWhenQualityIsZero) {
+  NmeaParser p;
+  FixAssembler a;
+  NmeaMessage m;
+  GpsFix fix;
+  ASSERT_EQ(p.parse(with_checksum("GPGGA,120000.00,,,,,0,00,99.9,,M,,M,,"), m), ParseResult::Message);
+  a.add(m, 1.0, fix);
+  ASSERT_TRUE(a.flush(fix));
+  EXPECT_FALSE(fix.has_position());
+  EXPECT_FALSE(fix.lat_deg.has_value());
+}
