@@ -38,9 +38,56 @@ void CsvRow::clear(std::size_t n_columns) {
   for (std::size_t i = 0; i < n_columns; ++i) value[i] = std::numeric_limits<double>::quiet_NaN();
 }
 
+namespace {
+
+/// Clinger's fast path (1990): when the decimal digits form an integer
+/// mantissa below 2^53 and the power of ten is within [-22, 22], both are
+/// exact doubles and m * 10^e (or m / 10^-e) is one correctly rounded IEEE
+/// operation: the result equals strtod's. Anything else returns false and
+/// takes the general path.
+bool parse_decimal_fast(const char* p, const char* last, double& out) {
+  static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                      1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  constexpr std::uint64_t kMaxExactMantissa = std::uint64_t{1} << 53;
+  constexpr long kMaxDigits = 19;  // 10^19 < 2^64: the mantissa cannot overflow
+  auto is_digit = [](char c) { return static_cast<unsigned>(c - '0') < 10u; };
+  if (p == last) return false;
+  const bool negative = *p == '-';
+  if (negative) ++p;
+  const char* const digits_begin = p;
+  std::uint64_t mantissa = 0;
+  for (; p != last && is_digit(*p); ++p) mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
+  long digits = p - digits_begin;
+  long exponent = 0;
+  if (p != last && *p == '.') {
+    const char* const frac_begin = ++p;
+    for (; p != last && is_digit(*p); ++p) mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
+    exponent = -(p - frac_begin);
+    digits -= exponent;
+  }
+  if (digits == 0 || digits > kMaxDigits) return false;
+  if (p != last && (*p == 'e' || *p == 'E')) {
+    ++p;
+    const bool exp_negative = p != last && *p == '-';
+    if (p != last && (*p == '-' || *p == '+')) ++p;
+    if (p == last) return false;
+    long e = 0;
+    for (; p != last && is_digit(*p) && e < 1000; ++p) e = e * 10 + (*p - '0');
+    exponent += exp_negative ? -e : e;
+  }
+  if (p != last || mantissa > kMaxExactMantissa || exponent < -22 || exponent > 22) return false;
+  const auto m = static_cast<double>(mantissa);
+  const double v = exponent < 0 ? m / kPow10[-exponent] : m * kPow10[exponent];
+  out = negative ? -v : v;
+  return true;
+}
+
+}  // namespace
+
 bool parse_double(std::string_view f, double& out) {
   const char* first = f.data();
   const char* last = f.data() + f.size();
+  if (parse_decimal_fast(first, last, out)) return true;
   const auto [p, ec] = std::from_chars(first, last, out);
   if (ec == std::errc{} && p == last) return true;
   // Forms strtod accepts that from_chars does not: leading '+', leading

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <string>
 
@@ -157,4 +158,22 @@ TEST(CsvTable, MissingFileIsAnErrorNamingIt) {
 TEST(CsvTable, DiagnosticFormatsAsFileLineColumn) {
   EXPECT_EQ((Diagnostic{"d/imu.csv", 17, 23, "field 'gz': not a number 'x'"}.to_string()),
             "d/imu.csv:17:23: field 'gz': not a number 'x'");
+}
+
+TEST(CsvTable, ParseDoubleAgreesBitForBitWithStrtod) {
+  // The contract says numbers are whatever C's strtod accepts; our fast path
+  // must give strtod's exact double, including near rounding boundaries.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> mant(-10.0, 10.0);
+  std::uniform_int_distribution<int> exp10(-30, 30), prec(1, 20);
+  char buf[64];
+  for (int i = 0; i < 200000; ++i) {
+    const double x = mant(rng) * std::pow(10.0, exp10(rng));
+    const int p = prec(rng);
+    std::snprintf(buf, sizeof buf, (i % 3 == 0) ? "%.*e" : (i % 3 == 1) ? "%.*g" : "%.*f", p, x);
+    double ours = 0.0;
+    ASSERT_TRUE(parse_double(buf, ours)) << buf;
+    const double ref = std::strtod(buf, nullptr);
+    ASSERT_EQ(std::memcmp(&ours, &ref, sizeof ref), 0) << buf;
+  }
 }
