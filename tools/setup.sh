@@ -18,11 +18,22 @@ packages=(
 )
 for arg in "$@"; do
   case "$arg" in
-    --cross) packages+=(g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user) ;;
+    --cross)
+      cross=1
+      packages+=(g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user
+                 libgpiod-dev:arm64 libfmt-dev:arm64 libgpiod-dev:armhf libfmt-dev:armhf) ;;
     --reference) packages+=(python3-pywt python3-scipy octave octave-signal) ;;
     *) echo "setup.sh: unknown option $arg" >&2; exit 2 ;;
   esac
 done
+
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+if [ "${cross:-0}" = 1 ]; then  # target libraries come from Debian's multiarch packages
+  for arch in arm64 armhf; do
+    dpkg --print-foreign-architectures | grep -qx "$arch" || $SUDO dpkg --add-architecture "$arch"
+  done
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -32,8 +43,6 @@ if [ ${#missing[@]} -eq 0 ]; then
   echo "setup.sh: all ${#packages[@]} packages already installed"
   exit 0
 fi
-SUDO=""
-[ "$(id -u)" -eq 0 ] || SUDO="sudo"
 echo "setup.sh: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
