@@ -1,7 +1,5 @@
 #include "firmware/sim/flight_controls.hpp"
 
-#include <cmath>
-#include <numbers>
 
 namespace sinu::sim {
 
@@ -16,13 +14,13 @@ double Ramp::value(double t) const {
   if (duration_s_ <= 0.0 || t >= t0_s_ + duration_s_) return to_;
   if (t <= t0_s_) return from_;
   const double s = (t - t0_s_) / duration_s_;
-  return from_ + (to_ - from_) * 0.5 * (1.0 - std::cos(std::numbers::pi * s));
+  return from_ + (to_ - from_) * s * s * s * (10.0 + s * (-15.0 + 6.0 * s));
 }
 
 double Ramp::rate(double t) const {
   if (duration_s_ <= 0.0 || t <= t0_s_ || t >= t0_s_ + duration_s_) return 0.0;
   const double s = (t - t0_s_) / duration_s_;
-  return (to_ - from_) * 0.5 * std::numbers::pi / duration_s_ * std::sin(std::numbers::pi * s);
+  return (to_ - from_) / duration_s_ * 30.0 * s * s * (1.0 - s) * (1.0 - s);
 }
 
 ControlValues FlightControls::at(double t) const {

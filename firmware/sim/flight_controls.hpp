@@ -1,11 +1,12 @@
 #pragma once
 // The quantities that define a flight: ground speed V, flight-path angle
-// gamma, bank phi and angle of attack alpha. Each changes only by a cosine
-// ramp that starts and ends with zero rate, so every control and its rate is
-// continuous: the acceleration and the angular rate of the airframe are too.
+// gamma, bank phi and angle of attack alpha. Each changes only by a quintic
+// (minimum-jerk) ramp that starts and ends with zero rate and zero second
+// derivative, so every control, its rate and its acceleration are continuous:
+// the airframe's acceleration, angular rate and angular acceleration are too.
 namespace sinu::sim {
 
-/// x(t) = from + (to - from) (1 - cos(pi s)) / 2, s = (t - t0) / duration in [0, 1].
+/// x(t) = from + (to - from) (10 s^3 - 15 s^4 + 6 s^5), s = (t - t0) / duration in [0, 1].
 class Ramp {
  public:
   void hold(double value) { from_ = to_ = value; duration_s_ = 0.0; }
