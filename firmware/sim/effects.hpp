@@ -32,14 +32,14 @@ inline constexpr std::array<std::string_view, 11> kEffectNames = {
     "accel_temp_bias", "gyro_temp_bias", "mag_hard_iron",  "mag_soft_iron", "gyro_g_sensitivity"};
 
 struct Effects {
-  std::optional<Eigen::Vector3d> accel_scale_ppm, gyro_scale_ppm;
-  std::optional<Eigen::Matrix3d> accel_misalign_rad, gyro_misalign_rad;
-  std::optional<Eigen::Vector3d> lever_arm_b_m;
-  std::optional<double> gps_latency_s;
-  std::optional<Eigen::Vector3d> accel_temp_bias_m_s2_per_degC, gyro_temp_bias_rad_s_per_degC;
-  std::optional<Eigen::Vector3d> mag_hard_iron_uT;
-  std::optional<Eigen::Matrix3d> mag_soft_iron;
-  std::optional<Eigen::Matrix3d> gyro_g_sensitivity_rad_s_per_m_s2;
+  std::optional<Eigen::Vector3d> accel_scale_ppm{}, gyro_scale_ppm{};
+  std::optional<Eigen::Matrix3d> accel_misalign_rad{}, gyro_misalign_rad{};
+  std::optional<Eigen::Vector3d> lever_arm_b_m{};
+  std::optional<double> gps_latency_s{};
+  std::optional<Eigen::Vector3d> accel_temp_bias_m_s2_per_degC{}, gyro_temp_bias_rad_s_per_degC{};
+  std::optional<Eigen::Vector3d> mag_hard_iron_uT{};
+  std::optional<Eigen::Matrix3d> mag_soft_iron{};
+  std::optional<Eigen::Matrix3d> gyro_g_sensitivity_rad_s_per_m_s2{};
 
   std::size_t count() const;
 };
