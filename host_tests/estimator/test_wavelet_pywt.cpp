@@ -6,10 +6,16 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include "estimator/wavelet/denoiser_select.hpp"
+
+namespace sinu::est::wavelet {
+// Test names and failure messages print "db4", not the enum's bytes.
+void PrintTo(WaveletKind kind, std::ostream* os) { *os << wavelet_name(kind); }
+}  // namespace sinu::est::wavelet
 
 namespace {
 
