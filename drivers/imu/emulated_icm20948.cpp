@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "drivers/imu/icm20948_registers.hpp"
 
@@ -14,7 +13,6 @@ namespace ak = ak09916;
 
 namespace {
 
-constexpr double kStandardGravity_m_s2 = 9.80665;
 constexpr std::uint8_t kPwr1ResetValue = 0x41;  // asleep, auto clock (datasheet reset value)
 
 std::int16_t quantise(double value, double lsb) {
@@ -68,13 +66,19 @@ void EmulatedIcm20948::clear_faults() {
   nack_left_ = mag_overflow_left_ = 0;
 }
 
-hal::I2cStatus EmulatedIcm20948::read_registers(std::uint8_t address, std::uint8_t reg, std::span<std::uint8_t> data) {
+hal::I2cStatus EmulatedIcm20948::bus_fault(std::uint8_t address) {
   ++transfers_;
   if (bus_dead_) return hal::I2cStatus::Timeout;
   if (nack_left_ > 0) {
     --nack_left_;
     return hal::I2cStatus::Nack;
   }
+  if (address != address_ && !(address == ak::kAddress && bypass_enabled())) return hal::I2cStatus::Nack;
+  return hal::I2cStatus::Ok;
+}
+
+hal::I2cStatus EmulatedIcm20948::read_registers(std::uint8_t address, std::uint8_t reg, std::span<std::uint8_t> data) {
+  if (const auto fault = bus_fault(address); fault != hal::I2cStatus::Ok) return fault;
   if (address == address_) {
     for (std::size_t i = 0; i < data.size(); ++i) data[i] = read_icm(static_cast<std::uint8_t>(reg + i));
     return hal::I2cStatus::Ok;
@@ -88,12 +92,7 @@ hal::I2cStatus EmulatedIcm20948::read_registers(std::uint8_t address, std::uint8
 
 hal::I2cStatus EmulatedIcm20948::write_registers(std::uint8_t address, std::uint8_t reg,
                                                  std::span<const std::uint8_t> data) {
-  ++transfers_;
-  if (bus_dead_) return hal::I2cStatus::Timeout;
-  if (nack_left_ > 0) {
-    --nack_left_;
-    return hal::I2cStatus::Nack;
-  }
+  if (const auto fault = bus_fault(address); fault != hal::I2cStatus::Ok) return fault;
   if (address == address_) {
     for (std::size_t i = 0; i < data.size(); ++i) write_icm(static_cast<std::uint8_t>(reg + i), data[i]);
     return hal::I2cStatus::Ok;
@@ -156,9 +155,8 @@ void EmulatedIcm20948::load(const EmulatedSample& s) {
   if (awake && !stuck_) {
     const int accel_fs = (banks_[2][r::B2_ACCEL_CONFIG] >> 1) & 0x03;
     const int gyro_fs = (banks_[2][r::B2_GYRO_CONFIG_1] >> 1) & 0x03;
-    constexpr std::array<double, 4> kGyroLsbPerDps = {131.0, 65.5, 32.8, 16.4};
-    const double accel_lsb = kStandardGravity_m_s2 / (16384.0 / static_cast<double>(1 << accel_fs));
-    const double gyro_lsb = std::numbers::pi / 180.0 / kGyroLsbPerDps[static_cast<std::size_t>(gyro_fs)];
+    const double accel_lsb = icm20948::accel_m_s2_per_lsb(accel_fs);
+    const double gyro_lsb = icm20948::gyro_rad_s_per_lsb(gyro_fs);
     const auto accel = mounting_.to_sensor(s.specific_force_b_m_s2);
     const auto gyro = mounting_.to_sensor(s.angular_rate_b_rad_s);
     for (std::size_t i = 0; i < 3; ++i) {

@@ -50,6 +50,7 @@ class EmulatedIcm20948 final : public hal::I2cBus {
   std::uint8_t icm_register(int bank, std::uint8_t reg) const { return banks_[static_cast<std::size_t>(bank)][reg & 0x7F]; }
 
  private:
+  hal::I2cStatus bus_fault(std::uint8_t address);
   void reset_icm();
   std::uint8_t read_icm(std::uint8_t reg);
   void write_icm(std::uint8_t reg, std::uint8_t value);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "drivers/imu/icm20948_registers.hpp"
 
@@ -14,15 +13,9 @@ namespace ak = ak09916;
 
 namespace {
 
-constexpr double kStandardGravity_m_s2 = 9.80665;
 constexpr hal::TimeNs kWakeWaitNs = 20'000'000;   // clock settles after leaving sleep
 constexpr hal::TimeNs kMagResetWaitNs = 10'000'000;
 
-double accel_lsb_per_g(AccelRange r) { return 16384.0 / static_cast<double>(1 << static_cast<int>(r)); }
-double gyro_lsb_per_dps(GyroRange r) {
-  constexpr std::array<double, 4> kLsb = {131.0, 65.5, 32.8, 16.4};
-  return kLsb[static_cast<std::size_t>(r)];
-}
 std::int16_t be16(const std::uint8_t* p) { return static_cast<std::int16_t>((p[0] << 8) | p[1]); }
 std::int16_t le16(const std::uint8_t* p) { return static_cast<std::int16_t>((p[1] << 8) | p[0]); }
 
@@ -186,8 +179,8 @@ ImuRead Icm20948::read(hal::TimeNs edge_ns, ImuSample& out) {
 }
 
 void Icm20948::decode(const std::uint8_t* raw, const std::uint8_t* mag, bool mag_ok, ImuSample& out) const {
-  const double accel_scale = kStandardGravity_m_s2 / accel_lsb_per_g(config_.accel_range);
-  const double gyro_scale = std::numbers::pi / 180.0 / gyro_lsb_per_dps(config_.gyro_range);
+  const double accel_scale = icm20948::accel_m_s2_per_lsb(static_cast<int>(config_.accel_range));
+  const double gyro_scale = icm20948::gyro_rad_s_per_lsb(static_cast<int>(config_.gyro_range));
   std::array<double, 3> accel{}, gyro{};
   for (std::size_t i = 0; i < 3; ++i) {
     accel[i] = be16(raw + 2 * i) * accel_scale;

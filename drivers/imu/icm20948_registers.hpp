@@ -44,6 +44,16 @@ inline constexpr std::size_t kDataBytes = 14;  // accel 6, gyro 6, temp 2
 
 /// Internal sample clock of gyro and accel: ODR = 1125 Hz / (1 + divider).
 inline constexpr double kBaseRateHz = 1125.0;
+inline constexpr double kStandardGravity_m_s2 = 9.80665;
+/// Sensitivity for ACCEL_FS_SEL / GYRO_FS_SEL 0..3 (datasheet tables 1 and 2).
+inline constexpr double accel_lsb_per_g(int fs_sel) { return 16384.0 / static_cast<double>(1 << (fs_sel & 3)); }
+inline constexpr double gyro_lsb_per_dps(int fs_sel) {
+  constexpr double kLsb[4] = {131.0, 65.5, 32.8, 16.4};
+  return kLsb[fs_sel & 3];
+}
+/// SI value of one LSB.
+inline constexpr double accel_m_s2_per_lsb(int fs_sel) { return kStandardGravity_m_s2 / accel_lsb_per_g(fs_sel); }
+inline constexpr double gyro_rad_s_per_lsb(int fs_sel) { return 3.14159265358979323846 / 180.0 / gyro_lsb_per_dps(fs_sel); }
 /// Temperature: degC = raw / 333.87 + 21 (RoomTemp_Offset 0).
 inline constexpr double kTempLsbPerDegC = 333.87, kTempOffsetDegC = 21.0;
 
