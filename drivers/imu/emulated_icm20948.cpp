@@ -16,6 +16,7 @@ namespace {
 constexpr std::uint8_t kPwr1ResetValue = 0x41;  // asleep, auto clock (datasheet reset value)
 
 std::int16_t quantise(double value, double lsb) {
+  if (!std::isfinite(value)) return 0;
   return static_cast<std::int16_t>(std::clamp(std::llround(value / lsb), -32768LL, 32767LL));
 }
 void put_be16(std::uint8_t* p, std::int16_t v) {
