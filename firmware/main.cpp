@@ -15,6 +15,8 @@ int main(int argc, char** argv) {
   sinu::app::Action action;
   sinu::app::add_inspect_command(app, action);
   sinu::app::add_convert_command(app, action);
+  sinu::app::add_record_command(app, action);
+  sinu::app::add_fly_command(app, action);
   sinu::app::add_pending_commands(app, action);
   try {
     app.parse(argc, argv);
