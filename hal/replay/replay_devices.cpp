@@ -33,6 +33,14 @@ bool ReplaySession::load(rec::RecordingReader& reader) {
   return true;
 }
 
+void ReplaySession::skip_outputs() {
+  // What the board sent to the GPS (set-up commands, baud changes) has no
+  // receiver in a replay: passed over wherever it sits.
+  while (cursor_ < records_.size() &&
+         (records_[cursor_].kind == Kind::SerialTx || records_[cursor_].kind == Kind::SerialBaud))
+    consume(records_[cursor_]);
+}
+
 void ReplaySession::consume(const Entry& e) {
   clock_.advance_to_ns(e.t_ns);
   ++cursor_;
@@ -40,6 +48,7 @@ void ReplaySession::consume(const Entry& e) {
 
 I2cStatus ReplaySession::I2c::transfer(Kind kind, std::uint8_t address, std::uint8_t reg, std::size_t n,
                                        std::uint8_t* out) {
+  s_.skip_outputs();
   const Entry* e = s_.at();
   const std::uint8_t* p = e ? s_.payload(*e) : nullptr;
   if (!e || e->kind != kind || e->length != 3 + n || p[0] != address || p[1] != reg) {
@@ -67,6 +76,7 @@ bool ReplaySession::Serial::set_baud(std::uint32_t) {
 }
 
 SerialResult ReplaySession::Serial::read(std::span<std::uint8_t> out, TimeNs) {
+  if (chunk_offset_ == 0) s_.skip_outputs();
   const Entry* e = s_.at();
   if (!e) return {SerialStatus::Closed, 0, s_.clock_.now_ns()};
   if (e->kind != Kind::SerialRx || e->length < 1) return {SerialStatus::Ok, 0, s_.clock_.now_ns()};
@@ -89,6 +99,7 @@ SerialResult ReplaySession::Serial::write(std::span<const std::uint8_t> bytes) {
 }
 
 EdgeStatus ReplaySession::Drdy::wait_rising(TimeNs timeout_ns, TimeNs& edge_time_ns) {
+  s_.skip_outputs();
   while (const Entry* e = s_.at()) {
     if (e->kind == Kind::GpioEdge) {
       edge_time_ns = e->t_ns;

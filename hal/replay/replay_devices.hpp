@@ -46,6 +46,7 @@ class ReplaySession {
   const Entry* at() const { return cursor_ < records_.size() ? &records_[cursor_] : nullptr; }
   const std::uint8_t* payload(const Entry& e) const { return bytes_.data() + e.offset; }
   void consume(const Entry& e);
+  void skip_outputs();
 
   class I2c final : public I2cBus {
    public:

@@ -167,7 +167,12 @@ TEST(ReplayRoundTrip, FaultyLiveRunAndItsReplayGiveTheSameSamplesBitForBit) {
     ASSERT_TRUE(writer.open(raw));
     hal::rec::RecordingI2cBus i2c(chip, writer, clock);
     hal::rec::RecordingGpioEdge drdy(edges, writer);
-    board::BoardLoop loop({drdy, i2c, serial, clock}, {});
+    hal::rec::RecordingSerialPort gps(serial, writer, clock);
+    // GPS set-up as `sinu record --gps-setup mtk` sends it: outputs a replay passes over.
+    const std::string setup = "$PMTK220,200*2C\r\n";
+    gps.write({reinterpret_cast<const std::uint8_t*>(setup.data()), setup.size()});
+    gps.set_baud(115200);
+    board::BoardLoop loop({drdy, i2c, gps, clock}, {});
     loop.run(live);
     live_counters = loop.imu().counters();
     ASSERT_TRUE(writer.close());

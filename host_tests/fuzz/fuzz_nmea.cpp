@@ -33,8 +33,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       require(stream.last_sentence().front() == '$');
     }
   }
-  while (stream.finish(2.0, fix)) check_fix(fix);
-  if (stream.sentence_ready()) ++framed;
+  while (true) {
+    const bool got = stream.finish(2.0, fix);
+    if (stream.sentence_ready()) ++framed;
+    if (!got) break;
+    check_fix(fix);
+  }
   const auto c = stream.counters();
   require(c.sentences.total() - c.framing.too_long == framed);  // every framed sentence is counted once
 
