@@ -51,7 +51,7 @@ void write_dataset(const std::filesystem::path& dir) {
   }
   std::ofstream gps(dir / "gps.nmea");
   for (int k = 0; k < 50; ++k) {
-    char utc[16];
+    char utc[32];
     std::snprintf(utc, sizeof utc, "1015%02d.%02d", 20 + k / 5, (k % 5) * 20);
     gps.precision(3);
     gps << std::fixed << 1203.01 + k * 0.2 << ","

@@ -24,9 +24,9 @@ constexpr int kEpochs = 10;
 constexpr auto kPeriod = std::chrono::milliseconds(200);  // 5 Hz
 
 std::string epoch_bytes(int i) {
-  char utc[16];
+  char utc[32];
   std::snprintf(utc, sizeof utc, "1015%02d.%02d", 20 + i / 5, (i % 5) * 20);
-  char lat[24];
+  char lat[32];
   std::snprintf(lat, sizeof lat, "3024.%05d", 51234 + i);
   return with_checksum(std::string("GNRMC,") + utc + ",A," + lat + ",N,11421.12345,E,10.0,90.0,220326,,,A") +
          with_checksum(std::string("GNGGA,") + utc + "," + lat + ",N,11421.12345,E,1,12,0.8,45.3,M,-2.1,M,,") +
