@@ -53,6 +53,13 @@ void FixAssembler::merge(const NmeaMessage& msg) {
           f.sigma_lat_m = m.sigma_lat_m;
           f.sigma_lon_m = m.sigma_lon_m;
           f.sigma_alt_m = m.sigma_alt_m;
+        } else if constexpr (std::is_same_v<T, GllMessage>) {
+          f.has_gll = true;
+          f.gll_valid = m.valid;
+          if (!f.has_gga && !f.has_rmc) {
+            f.lat_deg = m.lat_deg;
+            f.lon_deg = m.lon_deg;
+          }
         } else if constexpr (std::is_same_v<T, ZdaMessage>) {
           if (m.date) f.date = m.date;
         }

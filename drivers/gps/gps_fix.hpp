@@ -1,6 +1,6 @@
 #pragma once
 // One GPS epoch: everything the receiver said about the same UTC instant,
-// gathered from GGA, RMC, VTG, GSA, GST and ZDA.
+// gathered from GGA, RMC, VTG, GSA, GST, ZDA and GLL.
 #include <optional>
 
 #include "drivers/gps/nmea_messages.hpp"
@@ -20,10 +20,12 @@ struct GpsFix {
   std::optional<double> speed_m_s, course_deg;
   std::optional<double> sigma_lat_m, sigma_lon_m, sigma_alt_m;  // from GST
   bool has_gga = false, has_rmc = false, has_gst = false;
+  bool has_gll = false, gll_valid = false;
 
-  /// A usable position: GGA says fixed, or (without GGA) RMC says valid.
+  /// A usable position: GGA says fixed, or (without GGA) RMC says valid, or
+  /// (with neither) GLL says valid.
   bool has_position() const {
-    return lat_deg && lon_deg && (has_gga ? quality > 0 : rmc_valid);
+    return lat_deg && lon_deg && (has_gga ? quality > 0 : has_rmc ? rmc_valid : gll_valid);
   }
   /// WGS-84 ellipsoidal height = altitude above MSL + geoid separation.
   std::optional<double> ellipsoid_height_m() const {

@@ -60,12 +60,21 @@ struct GstMessage {
   std::optional<double> sigma_lat_m, sigma_lon_m, sigma_alt_m;
 };
 
+/// GLL: position and time only (some receivers report every other epoch
+/// with GLL instead of GGA/RMC: Garmin 48, Humminbird, Triton).
+struct GllMessage {
+  std::optional<UtcMs> utc_ms;
+  std::optional<double> lat_deg, lon_deg;
+  bool valid = false;  // status 'A' (and mode not 'N')
+};
+
 /// ZDA: date and time.
 struct ZdaMessage {
   std::optional<UtcMs> utc_ms;
   std::optional<UtcDate> date;
 };
 
-using NmeaMessage = std::variant<GgaMessage, RmcMessage, VtgMessage, GsaMessage, GstMessage, ZdaMessage>;
+using NmeaMessage =
+    std::variant<GgaMessage, RmcMessage, VtgMessage, GsaMessage, GstMessage, ZdaMessage, GllMessage>;
 
 }  // namespace sinu::drivers

@@ -125,6 +125,15 @@ ParseResult decode_zda(const NmeaFields& f, ZdaMessage& m, bool& bad) {
   return ParseResult::Message;
 }
 
+ParseResult decode_gll(const NmeaFields& f, GllMessage& m, bool& bad) {
+  if (f.count < 7) return (bad = true), ParseResult::Corrupt;
+  m.lat_deg = parse_latitude(f[1], f[2], bad);
+  m.lon_deg = parse_longitude(f[3], f[4], bad);
+  m.utc_ms = parse_utc_time(f[5], bad);
+  m.valid = f[6] == "A" && f[7] != "N";  // NMEA 2.3 mode 'N': data not valid
+  return ParseResult::Message;
+}
+
 template <class Msg, class Decoder>
 ParseResult decode_into(const NmeaFields& f, NmeaMessage& out, Decoder decode, bool& bad) {
   Msg m;
@@ -212,6 +221,7 @@ ParseResult NmeaParser::parse(std::string_view sentence, NmeaMessage& out) {
     else if (addr.type == "GSA") r = decode_into<GsaMessage>(f, out, decode_gsa, bad);
     else if (addr.type == "GST") r = decode_into<GstMessage>(f, out, decode_gst, bad);
     else if (addr.type == "ZDA") r = decode_into<ZdaMessage>(f, out, decode_zda, bad);
+    else if (addr.type == "GLL") r = decode_into<GllMessage>(f, out, decode_gll, bad);
   }
   if (bad) {
     last_error_ = "malformed field";

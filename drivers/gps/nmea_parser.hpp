@@ -1,6 +1,6 @@
 #pragma once
 // Sentence -> typed message, with the counters gpsd users expect. Any talker
-// (GP, GN, GL, GA, GB, BD, ...). Sentences we do not decode (GSV, GLL, TXT,
+// (GP, GN, GL, GA, GB, BD, ...). Sentences we do not decode (GSV, TXT,
 // proprietary) are counted as "ignored"; they are not errors.
 #include <cstdint>
 #include <optional>

@@ -49,7 +49,11 @@ SentenceCheck check_sentence(std::string_view s) {
   if (addr.size() < 2) return SentenceCheck::BadAddress;
   for (char c : addr)
     if (!is_upper_alnum(c)) return SentenceCheck::BadAddress;
-  if (addr.front() != 'P' && addr.size() != 5) return SentenceCheck::BadAddress;
+  // Standard addresses are TTSSS; proprietary ones start with 'P'. Some
+  // receivers send longer non-standard ones (Unicore $SNRSTAT, $GYOACC): they
+  // and proprietary ones of any length ($PSTMANTENNASTATUS) are
+  // well-framed sentences of a type we do not decode, not corruption.
+  if (addr.front() != 'P' && addr.size() > kNmeaMaxAddress) return SentenceCheck::BadAddress;
   return SentenceCheck::Ok;
 }
 

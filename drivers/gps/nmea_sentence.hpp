@@ -10,8 +10,11 @@
 namespace sinu::drivers {
 
 /// Longest sentence accepted, '$' to checksum inclusive. NMEA 0183 says 82
-/// with CR LF; real receivers (u-blox GSV, Trimble) exceed it, so we allow more.
-inline constexpr std::size_t kNmeaMaxSentence = 160;
+/// with CR LF; real receivers exceed it (MediaTek $PMTKCHN is 206 bytes in
+/// gpsd's mtk-3301 capture, u-blox GSV with signal IDs, Trimble), so we allow more.
+inline constexpr std::size_t kNmeaMaxSentence = 255;
+/// Longest address field ("GPGGA" is 5; vendor extensions reach 7).
+inline constexpr std::size_t kNmeaMaxAddress = 10;
 /// Most fields any sentence we decode has (GSA has 18 after the address).
 inline constexpr std::size_t kNmeaMaxFields = 32;
 

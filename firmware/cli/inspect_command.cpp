@@ -39,6 +39,8 @@ void add_inspect_command(CLI::App& app, Action& action) {
   ds->add_option("DIR", opts->dir, "Dataset folder (imu.csv, gps.nmea, truth.csv, meta.json)")->required();
   ds->add_flag("--json", opts->json, "Print the summary as JSON");
   ds->callback([&action, opts] { action = [opts] { return inspect_dataset(*opts); }; });
+  add_inspect_nmea_command(*inspect, action);
+  add_inspect_recording_command(*inspect, action);
 }
 
 }  // namespace sinu::app

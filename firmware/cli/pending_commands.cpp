@@ -19,9 +19,6 @@ constexpr Pending kPending[] = {
     {"calibrate", "Fit GM, AR and Allan noise models to a static session (bench calibration)", 5},
     {"replay", "Replay a dataset through the INS/EKF and write the navigation solution", 6},
     {"diagnose", "Compare the model with the measurements and name the missing effect", 6},
-    {"record", "Record raw HAL traffic from the board's sensors", 7},
-    {"convert", "Convert a raw HAL recording to a dataset folder and back", 7},
-    {"fly", "Run the navigation unit on the companion computer", 7},
 };
 
 }  // namespace

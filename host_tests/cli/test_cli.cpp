@@ -71,7 +71,8 @@ TEST(Cli, InspectSummarisesAValidDataset) {
 }
 
 TEST(Cli, PendingModesSayWhichIssueAndExitTwo) {
-  const auto r = run_sinu({"fly"});
+  // issue 7 made fly real; diagnose (issue 6) is still pending on this branch
+  const auto r = run_sinu({"diagnose"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("not available yet"), std::string::npos);
   EXPECT_TRUE(r.out.empty()) << "never made-up output";

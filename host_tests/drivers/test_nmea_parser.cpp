@@ -39,7 +39,7 @@ TEST(NmeaSentence, FramingErrors) {
   EXPECT_EQ(check_sentence("$GPGGA,0927*5"), SentenceCheck::MissingChecksum);
   EXPECT_EQ(check_sentence(with_checksum("GPGGA,09\x01""27")), SentenceCheck::BadCharacter);
   EXPECT_EQ(check_sentence(with_checksum("gpgga,1")), SentenceCheck::BadAddress);
-  EXPECT_EQ(check_sentence("$" + std::string(200, 'A') + "*00"), SentenceCheck::TooLong);
+  EXPECT_EQ(check_sentence("$" + std::string(sinu::drivers::kNmeaMaxSentence, 'A') + "*00"), SentenceCheck::TooLong);
 }
 
 TEST(NmeaParser, DecodesGgaWithUnitsAndSigns) {

@@ -1,0 +1,58 @@
+#include "firmware/board/board_loop.hpp"
+
+#include <array>
+
+namespace sinu::board {
+
+BoardLoop::BoardLoop(const BoardDevices& devices, const drivers::Icm20948Config& imu_config)
+    : dev_(devices), imu_(devices.i2c, devices.clock, imu_config) {}
+
+void BoardLoop::drain_serial(BoardSink& sink) {
+  std::array<std::uint8_t, 256> buffer{};
+  drivers::GpsFix fix;
+  while (true) {
+    const hal::SerialResult r = dev_.gps.read(buffer, 0);
+    if (r.status == hal::SerialStatus::Error) ++counters_.serial_errors;
+    if (r.status != hal::SerialStatus::Ok || r.bytes == 0) return;
+    counters_.serial_bytes += r.bytes;
+    for (std::size_t i = 0; i < r.bytes; ++i) {
+      const bool got_fix = nmea_.push(static_cast<char>(buffer[i]), hal::ns_to_s(r.time_ns), fix);
+      if (nmea_.sentence_ready()) sink.on_sentence(r.time_ns, nmea_.last_sentence());
+      if (got_fix) sink.on_fix(fix);
+    }
+  }
+}
+
+void BoardLoop::run(BoardSink& sink, const std::atomic<bool>* stop, hal::TimeNs duration_ns) {
+  const hal::TimeNs start = dev_.clock.now_ns();
+  imu_.init();  // a failure is counted; read() retries with back-off
+  drivers::ImuSample sample;
+  while (!(stop && stop->load())) {
+    hal::TimeNs edge_ns = 0;
+    const hal::EdgeStatus st = dev_.drdy.wait_rising(kEdgeTimeoutNs, edge_ns);
+    if (st == hal::EdgeStatus::Closed) break;
+    if (st == hal::EdgeStatus::Edge) {
+      ++counters_.edges;
+      if (imu_.read(edge_ns, sample) == drivers::ImuRead::Sample) sink.on_imu(sample);
+    } else if (st == hal::EdgeStatus::Timeout) {
+      ++counters_.edge_timeouts;
+    } else {
+      ++counters_.edge_errors;
+    }
+    drain_serial(sink);
+    const hal::TimeNs now = dev_.clock.now_ns();
+    sink.on_tick(now);
+    if (duration_ns > 0 && now - start >= duration_ns) break;
+  }
+  drain_serial(sink);
+  drivers::GpsFix fix;
+  const double end_s = hal::ns_to_s(dev_.clock.now_ns());
+  while (true) {
+    const bool got_fix = nmea_.finish(end_s, fix);
+    if (nmea_.sentence_ready()) sink.on_sentence(dev_.clock.now_ns(), nmea_.last_sentence());
+    if (!got_fix) break;
+    sink.on_fix(fix);
+  }
+}
+
+}  // namespace sinu::board

@@ -1,0 +1,57 @@
+#include "firmware/board/dataset_sink.hpp"
+
+#include <filesystem>
+
+#include "firmware/dataset/dataset_paths.hpp"
+
+namespace sinu::board {
+
+DatasetSink::DatasetSink() { io::set_imu_formats(imu_); }
+
+bool DatasetSink::open(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  const io::DatasetPaths paths{dir};
+  if (!imu_.open(paths.imu())) {
+    error_ = imu_.error().to_string();
+    return false;
+  }
+  if (!gps_.open(paths.gps())) {
+    error_ = gps_.error().to_string();
+    return false;
+  }
+  return true;
+}
+
+void DatasetSink::on_imu(const drivers::ImuSample& s) {
+  io::CsvRow row;
+  row.clear(io::imu_col::count);
+  row.set(io::imu_col::t, hal::ns_to_s(s.t_ns));
+  for (std::size_t i = 0; i < 3; ++i) {
+    row.set(io::imu_col::ax + i, s.specific_force_b_m_s2[i]);
+    row.set(io::imu_col::gx + i, s.angular_rate_b_rad_s[i]);
+    if (s.has_mag) row.set(io::imu_col::mx + i, s.mag_b_uT[i]);
+  }
+  row.set(io::imu_col::temp, s.temp_degC);
+  if (!imu_.write(row) && error_.empty()) error_ = imu_.error().to_string();
+  ++rows_;
+}
+
+void DatasetSink::on_sentence(hal::TimeNs arrival_ns, std::string_view sentence) {
+  std::int64_t us = (arrival_ns + 500) / 1000;
+  if (have_last_ && us <= last_us_) us = last_us_ + 1;
+  last_us_ = us;
+  have_last_ = true;
+  if (!gps_.write(static_cast<double>(us) * 1e-6, sentence) && error_.empty()) error_ = gps_.error().to_string();
+  ++sentences_;
+}
+
+bool DatasetSink::close() {
+  const bool imu_ok = imu_.close();
+  const bool gps_ok = gps_.close();
+  if (!imu_ok && error_.empty()) error_ = imu_.error().to_string();
+  if (!gps_ok && error_.empty()) error_ = gps_.error().to_string();
+  return imu_ok && gps_ok && error_.empty();
+}
+
+}  // namespace sinu::board
