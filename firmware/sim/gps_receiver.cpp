@@ -1,6 +1,7 @@
 #include "firmware/sim/gps_receiver.hpp"
 
 #include <Eigen/Geometry>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -17,8 +18,16 @@ constexpr double kKnot_m_s = 1852.0 / 3600.0;
 constexpr int kSatellites = 11;
 constexpr double kHdop = 0.9;
 constexpr double kPseudorangeRms_m = 1.1;
+// The date of UTC second `utc_s` counted from midnight of the clock's start date
+// (a long flight may pass midnight). Uses the same centisecond rounding as the time field.
+std::chrono::year_month_day utc_date(const UtcClock& c, double utc_s) {
+  using namespace std::chrono;
+  const long long day_offset = std::llround(utc_s * 100.0) / (86400LL * 100);
+  const sys_days start = year_month_day{year{c.year}, month{static_cast<unsigned>(c.month)},
+                                        day{static_cast<unsigned>(c.day)}};
+  return year_month_day{start + days{day_offset}};
+}
 
-std::size_t add(std::span<char> buf, std::size_t at, std::size_t n) { return std::min(at + n, buf.size() - 4); }
 }  // namespace
 
 Eigen::Vector3d GpsErrorModel::sigma_ned_m() const {
@@ -90,15 +99,17 @@ bool GpsReceiver::fix(const TrueMotion& m, double stamp_s, io::NmeaLogWriter& ou
   double arrival = stamp_s + model_.base_latency_s;
   int n = std::snprintf(buf, b.size(), "$GPGGA,%s,%s,%s,1,%02d,%.1f,%.3f,M,%.3f,M,,", time_s, lat_s, lon_s,
                         kSatellites, kHdop, h - sep, sep);
-  bool ok = emit(buf, append_checksum(b, add(b, 0, static_cast<std::size_t>(n))), arrival, out);
+  bool ok = emit(buf, append_checksum(b, written_length(n, b.size())), arrival, out);
   arrival += model_.sentence_spacing_s;
-  n = std::snprintf(buf, b.size(), "$GPRMC,%s,A,%s,%s,%.3f,%.2f,%02d%02d%02d,,,A", time_s, lat_s, lon_s, speed_kn,
-                    course, clock_.day, clock_.month, clock_.year % 100);
-  ok = emit(buf, append_checksum(b, add(b, 0, static_cast<std::size_t>(n))), arrival, out) && ok;
+  const std::chrono::year_month_day date = utc_date(clock_, utc);
+  n = std::snprintf(buf, b.size(), "$GPRMC,%s,A,%s,%s,%.3f,%.2f,%02u%02u%02d,,,A", time_s, lat_s, lon_s, speed_kn,
+                    course, static_cast<unsigned>(date.day()), static_cast<unsigned>(date.month()),
+                    static_cast<int>(date.year()) % 100);
+  ok = emit(buf, append_checksum(b, written_length(n, b.size())), arrival, out) && ok;
   arrival += model_.sentence_spacing_s;
   n = std::snprintf(buf, b.size(), "$GPGST,%s,%.1f,%.2f,%.2f,0.0,%.2f,%.2f,%.2f", time_s, kPseudorangeRms_m,
                     std::max(sigma.x(), sigma.y()), std::min(sigma.x(), sigma.y()), sigma.x(), sigma.y(), sigma.z());
-  ok = emit(buf, append_checksum(b, add(b, 0, static_cast<std::size_t>(n))), arrival, out) && ok;
+  ok = emit(buf, append_checksum(b, written_length(n, b.size())), arrival, out) && ok;
   return ok;
 }
 

@@ -29,7 +29,8 @@ struct GpsErrorModel {
 /// Synthetic smooth geoid undulation N [m] (|N| < 45 m): MSL = h - N.
 double geoid_separation_m(double lat_rad, double lon_rad);
 
-/// UTC of the board clock: utc_s_of_day = board_s + utc_minus_board_s.
+/// UTC of the board clock: seconds since midnight of the start date =
+/// board_s + utc_minus_board_s (past 86400 s the date advances).
 struct UtcClock {
   double utc_minus_board_s = 0.0;
   int year = 2025, month = 6, day = 15;

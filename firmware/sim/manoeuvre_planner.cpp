@@ -37,8 +37,7 @@ void ManoeuvrePlanner::plan_turn(double bank, double turn) {
   push({ramp, 2.0, speed_m_s_, 0.0, 0.0, kCruiseAlpha_rad, "roll out"});
 }
 
-void ManoeuvrePlanner::plan_height_change(double dh, double agl) {
-  (void)agl;
+void ManoeuvrePlanner::plan_height_change(double dh) {
   const double gamma = std::copysign(rng_.uniform(3.0, 7.0) * kDeg, dh);
   const double climb_rate = speed_m_s_ * std::sin(std::abs(gamma));
   const double hold = std::max(0.0, std::abs(dh) / climb_rate - kHeightRamp_s);
@@ -108,7 +107,7 @@ void ManoeuvrePlanner::plan(const PlannerInput& in) {
     double target = rng_.uniform(kMinAgl_m + 10.0, kMaxAgl_m - 10.0);
     if (std::abs(target - in.height_agl_m) < 40.0)
       target = in.height_agl_m > 0.5 * (kMinAgl_m + kMaxAgl_m) ? in.height_agl_m - 60.0 : in.height_agl_m + 60.0;
-    plan_height_change(target - in.height_agl_m, in.height_agl_m);
+    plan_height_change(target - in.height_agl_m);
   } else {
     push({rng_.uniform(10.0, 20.0), rng_.uniform(5.0, 30.0), rng_.uniform(33.0, 47.0), 0.0, 0.0, kCruiseAlpha_rad,
           "speed change"});

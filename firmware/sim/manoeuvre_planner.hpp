@@ -37,7 +37,7 @@ class ManoeuvrePlanner {
   void plan(const PlannerInput& in);
   void push(const Primitive& p);
   void plan_turn(double bank_rad, double turn_rad);
-  void plan_height_change(double dh_m, double agl_m);
+  void plan_height_change(double dh_m);
   double final_descent_s(double agl_m) const;
 
   enum class Phase { Ground, TakeoffRoll, Climbout, Cruise, FinalDescent, Done };

@@ -1,5 +1,6 @@
 #include "firmware/sim/nmea_format.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -7,10 +8,11 @@ namespace sinu::sim {
 
 namespace {
 constexpr char kHex[] = "0123456789ABCDEF";
-std::size_t clamp_written(int n, std::size_t cap) {
-  return n < 0 ? 0 : std::min(static_cast<std::size_t>(n), cap - 1);
-}
 }  // namespace
+
+std::size_t written_length(int n, std::size_t capacity) {
+  return n < 0 ? 0 : std::min(static_cast<std::size_t>(n), capacity - 1);
+}
 
 std::size_t append_checksum(std::span<char> buf, std::size_t len) {
   unsigned char x = 0;
@@ -29,14 +31,14 @@ std::size_t format_angle(std::span<char> buf, double deg, int degree_digits, cha
   const long long rem = units % (60 * kUnitsPerMinute);
   const int n = std::snprintf(buf.data(), buf.size(), "%0*lld%02lld.%06lld,%c", degree_digits, whole_deg,
                               rem / kUnitsPerMinute, rem % kUnitsPerMinute, deg < 0.0 ? negative : positive);
-  return clamp_written(n, buf.size());
+  return written_length(n, buf.size());
 }
 
 std::size_t format_utc(std::span<char> buf, double utc_s) {
   const long long cs = std::llround(utc_s * 100.0) % (86400LL * 100);
   const int n = std::snprintf(buf.data(), buf.size(), "%02lld%02lld%02lld.%02lld", cs / 360000, cs / 6000 % 60,
                               cs / 100 % 60, cs % 100);
-  return clamp_written(n, buf.size());
+  return written_length(n, buf.size());
 }
 
 std::size_t corrupt_sentence(std::span<char> buf, std::size_t len, Rng& rng) {

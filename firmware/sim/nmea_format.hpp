@@ -14,6 +14,8 @@ namespace sinu::sim {
 
 inline constexpr std::size_t kSentenceBuffer = 192;
 
+/// Characters snprintf put into a buffer of `capacity` given its return value.
+std::size_t written_length(int n, std::size_t capacity);
 /// Appends "*hh" (XOR of the bytes between '$' and '*') to buf[0..len).
 std::size_t append_checksum(std::span<char> buf, std::size_t len);
 /// "ddmm.mmmmmm" (lat, 2 degree digits) or "dddmm.mmmmmm" (lon) and hemisphere.
