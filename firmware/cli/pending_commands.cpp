@@ -16,7 +16,6 @@ struct Pending {
 };
 
 constexpr Pending kPending[] = {
-    {"denoise", "Wavelet-denoise a dataset's IMU channels", 4},
     {"replay", "Replay a dataset through the INS/EKF and write the navigation solution", 6},
     {"diagnose", "Compare the model with the measurements and name the missing effect", 6},
     {"record", "Record raw HAL traffic from the board's sensors", 7},
