@@ -1,8 +1,10 @@
 #include "estimator/noise/allan_noise_terms.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace sinu::noise {
 
@@ -61,28 +63,48 @@ AllanNoiseTerms fit_allan_noise_terms(std::span<const AllanPoint> curve) {
   t.B_fit = std::sqrt(best(2)) / kFlickerAdevFactor;
   t.K = std::sqrt(3.0 * best(3));
   t.R = std::sqrt(2.0 * best(4));
-  // The flat part IEEE 952 reads B from: the first local minimum of the curve
-  // (lower than its predecessor and not above its next two points); a curve
-  // that keeps falling has none, and then its global minimum is used (B is
-  // then an upper bound and the report says the floor was not reached).
-  double min_adev = std::numeric_limits<double>::infinity();
-  std::size_t at = 0;
-  for (std::size_t i = 1; i + 2 < curve.size(); ++i) {
-    if (curve[i].adev < curve[i - 1].adev && curve[i].adev <= curve[i + 1].adev &&
-        curve[i].adev <= curve[i + 2].adev) {
-      at = i;
-      min_adev = curve[i].adev;
-      t.floor_reached = true;
-      break;
-    }
+  // The flat part IEEE 952 reads B from: points whose log-log slope (over
+  // +-kSlopeSpan points) is within +-kFlatSlope, with enough averaging
+  // (edf >= kMinEdf); the longest run of such points (a floor or a
+  // Gauss-Markov crest spans decades, a dip before a rise or a periodic bump's
+  // top a fraction of one), and its median ADEV. A curve with no flat run (still falling) gives its
+  // global minimum: B is then an upper bound and floor_reached is false.
+  constexpr std::size_t kSlopeSpan = 2;
+  constexpr double kFlatSlope = 0.25;  // closer to 0 than to the white (-1/2) or RRW (+1/2) slope
+  constexpr double kMinEdf = 10.0;
+  std::vector<bool> flat(curve.size(), false);
+  for (std::size_t i = kSlopeSpan; i + kSlopeSpan < curve.size(); ++i) {
+    const AllanPoint& lo = curve[i - kSlopeSpan];
+    const AllanPoint& hi = curve[i + kSlopeSpan];
+    const double slope = std::log(hi.adev / lo.adev) / std::log(hi.tau_s / lo.tau_s);
+    flat[i] = std::abs(slope) < kFlatSlope && curve[i].edf >= kMinEdf;
   }
-  if (!t.floor_reached) {
-    for (std::size_t i = 0; i < curve.size(); ++i) {
-      if (curve[i].adev < min_adev) min_adev = curve[i].adev, at = i;
+  std::size_t best_begin = 0, best_len = 0;
+  for (std::size_t i = 0; i < curve.size();) {
+    if (!flat[i]) {
+      ++i;
+      continue;
     }
+    std::size_t j = i;
+    while (j < curve.size() && flat[j]) ++j;
+    if (j - i > best_len) best_begin = i, best_len = j - i;
+    i = j;
+  }
+  t.floor_reached = best_len > 0;
+  std::size_t at = 0;
+  if (t.floor_reached) {
+    // The run's median point: robust to the scatter of the long-tau points.
+    std::vector<std::size_t> idx(best_len);
+    for (std::size_t i = 0; i < best_len; ++i) idx[i] = best_begin + i;
+    std::nth_element(idx.begin(), idx.begin() + static_cast<std::ptrdiff_t>(best_len / 2), idx.end(),
+                     [&](std::size_t l, std::size_t r) { return curve[l].adev < curve[r].adev; });
+    at = idx[best_len / 2];
+  } else {
+    for (std::size_t i = 1; i < curve.size(); ++i)
+      if (curve[i].adev < curve[at].adev) at = i;
   }
   t.B_tau_s = curve[at].tau_s;
-  t.B = min_adev / kFlickerAdevFactor;
+  t.B = curve[at].adev / kFlickerAdevFactor;
   t.valid = true;
   return t;
 }

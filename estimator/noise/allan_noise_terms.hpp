@@ -17,8 +17,10 @@
 // not support comes out exactly zero instead of negative.
 //
 // Bias instability is reported the way IEEE 952 reads it off the plot: the
-// floor (first local minimum) of the measured ADEV divided by
-// sqrt(2 ln2 / pi) = 0.664 (`B`), with the tau where it occurs. The fitted flicker floor (`B_fit`) is given too;
+// flat part of the measured ADEV (the median of the longest run of points
+// with |log-log slope| < 0.25) divided by sqrt(2 ln2 / pi) = 0.664 (`B`), with the tau
+// where it occurs. For a Gauss-Markov bias of std sigma the flat run is its
+// ADEV crest, 0.62 sigma near 1.9 tau, so B reads ~0.93 sigma. The fitted flicker floor (`B_fit`) is given too;
 // the two agree for true flicker noise, and differ when the "instability" is a
 // Gauss-Markov bump (then B is the figure datasheets quote).
 #include <span>

@@ -39,16 +39,32 @@ std::vector<double> autocorrelation_fft(std::span<const double> x, std::size_t m
   const std::size_t n = x.size();
   if (n == 0) return {};
   max_lag = std::min(max_lag, n - 1);
+  // Block (overlap-add in the lag domain) correlation: the sum over n of
+  // x(n) x(n+k) is split into blocks of `block` values of n; each block's
+  // contribution is the cross-correlation of the block with the block
+  // extended by max_lag samples, computed with an FFT of size nfft >=
+  // block + max_lag (no circular wrap for k <= max_lag). The spectra add, so
+  // one inverse FFT serves all blocks. An FFT of a few times max_lag stays in
+  // cache, several times faster than one FFT of the whole (hours-long) series.
   std::size_t nfft = 1;
-  while (nfft < 2 * n) nfft <<= 1;
-  std::vector<double> padded(nfft, 0.0);
-  std::copy(x.begin(), x.end(), padded.begin());
+  while (nfft < 4 * (max_lag + 1)) nfft <<= 1;
+  const std::size_t block = nfft - max_lag;
   Eigen::FFT<double> fft;
-  std::vector<std::complex<double>> spectrum;
-  fft.fwd(spectrum, padded);
-  for (auto& c : spectrum) c = std::complex<double>(std::norm(c), 0.0);
+  std::vector<double> head(nfft), ext(nfft);
+  std::vector<std::complex<double>> head_f, ext_f, acc(nfft, 0.0);
+  for (std::size_t start = 0; start < n; start += block) {
+    const std::size_t head_len = std::min(block, n - start);
+    const std::size_t ext_len = std::min(block + max_lag, n - start);
+    std::fill(head.begin(), head.end(), 0.0);
+    std::fill(ext.begin(), ext.end(), 0.0);
+    std::copy_n(x.begin() + static_cast<std::ptrdiff_t>(start), head_len, head.begin());
+    std::copy_n(x.begin() + static_cast<std::ptrdiff_t>(start), ext_len, ext.begin());
+    fft.fwd(head_f, head);
+    fft.fwd(ext_f, ext);
+    for (std::size_t i = 0; i < nfft; ++i) acc[i] += std::conj(head_f[i]) * ext_f[i];
+  }
   std::vector<double> circular;
-  fft.inv(circular, spectrum);
+  fft.inv(circular, acc);
   std::vector<double> r(circular.begin(), circular.begin() + static_cast<std::ptrdiff_t>(max_lag + 1));
   scale_lags(r, n, scale);
   return r;

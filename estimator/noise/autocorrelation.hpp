@@ -5,8 +5,8 @@
 //                                                               what Yule-Walker uses)
 //   unbiased: r(k) = 1/(N-k) * sum_{n=k}^{N-1} x(n) x(n-k)
 // Short lag ranges are summed directly (O(N * max_lag)); long ones go through
-// Eigen's FFT (O(N log N)), zero-padded to >= 2N so the circular product is
-// the linear one.
+// Eigen's FFT in blocks of a few times max_lag (O(N log max_lag)), each block
+// zero-padded so the circular product is the linear one.
 #include <cstddef>
 #include <span>
 #include <vector>

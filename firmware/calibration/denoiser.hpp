@@ -19,8 +19,8 @@ struct Denoiser {
 
 Denoiser no_denoiser();
 
-/// The wavelet denoiser, or false with `why` when this build has none / the
-/// name is unknown.
+/// The streaming wavelet denoiser of estimator/wavelet (issue 4) over a whole
+/// series, delay removed; false with `why` for an unknown name or level count.
 bool make_wavelet_denoiser(const std::string& wavelet, int levels, Denoiser& out, std::string& why);
 
 }  // namespace sinu::calib
