@@ -11,7 +11,9 @@ using nlohmann::json;
 
 json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
-json ar_json(const noise::ArModel& m) { return json{{"a", m.a}, {"variance", m.variance}}; }
+json ar_json(const noise::ArModel& m) {
+  return json{{"a", m.a}, {"variance", m.variance}, {"stable", noise::ar_is_stable(m)}};
+}
 
 json axis_json(const AxisCalibration& a, double dt) {
   json j;
