@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   sinu::app::add_convert_command(app, action);
   sinu::app::add_record_command(app, action);
   sinu::app::add_fly_command(app, action);
+  sinu::app::add_calibrate_command(app, action);
   sinu::app::add_pending_commands(app, action);
   try {
     app.parse(argc, argv);

@@ -16,7 +16,6 @@ struct Pending {
 };
 
 constexpr Pending kPending[] = {
-    {"calibrate", "Fit GM, AR and Allan noise models to a static session (bench calibration)", 5},
     {"replay", "Replay a dataset through the INS/EKF and write the navigation solution", 6},
     {"diagnose", "Compare the model with the measurements and name the missing effect", 6},
 };

@@ -1,0 +1,148 @@
+// sinu calibrate end to end: simulated static sessions (sinu simulate static,
+// issue 3) in, calib.json and report out; hidden simulator values as truth;
+// bad input gives clear errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "host_tests/support/run_process.hpp"
+#include "host_tests/support/temp_dir.hpp"
+
+namespace {
+
+using nlohmann::json;
+using sinu::test::run_sinu;
+using sinu::test::TempDir;
+
+json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return json::parse(in);
+}
+
+// One simulated 8-hour bench session (the paper's length), run once for the
+// three checks below (one test, so ctest's per-test processes do not repeat
+// the ~30 s of simulation and calibration). A shorter session was tried and
+// does not prove the point: with 3 h the Allan curve ends at tau = 2700 s, and
+// for a bias with a long correlation time (seed 4242, gy: 443 s, whose ADEV
+// crest is near 1.9 x 443 = 840 s) too few clusters remain around the crest;
+// B then read 0.65 of the hidden sigma, outside the factor 1.5.
+class SimulatedSession : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new TempDir;
+    const auto sim = run_sinu({"simulate", "static", "--out", dir_->file("bench"), "--seed", "4242", "--hours", "8",
+                               "--hidden-out", dir_->file("hidden.json")});
+    ASSERT_EQ(sim.exit_code, 0) << sim.err;
+    const auto cal = run_sinu({"calibrate", "--in", dir_->file("bench"), "--out", dir_->file("calib.json"), "--report",
+                               dir_->file("report"), "--quiet"});
+    ASSERT_EQ(cal.exit_code, 0) << cal.err;
+  }
+  static void TearDownTestSuite() {
+    delete dir_;
+    dir_ = nullptr;
+  }
+  static TempDir* dir_;
+};
+TempDir* SimulatedSession::dir_ = nullptr;
+
+TEST_F(SimulatedSession, AllanTermsSchemaAndFindings) {
+  const json calib = read_json(dir_->file("calib.json"));
+  const json hidden = read_json(dir_->file("hidden.json"))["imu_error_model"];
+  const char* axes[] = {"ax", "ay", "az", "gx", "gy", "gz"};
+  for (int i = 0; i < 6; ++i) {
+    const std::string ax = axes[i];
+    const json& h = hidden[ax[0] == 'a' ? "accel" : "gyro"];
+    const auto k = static_cast<std::size_t>(i % 3);
+    const double n_true = h["white_noise_density"][k];
+    const double gm_sigma = h["gm_sigma"][k];
+    const json& allan = calib["axes"][ax]["allan"];
+    // White-noise density within 10% (the issue's bound; measured 1-5%).
+    EXPECT_NEAR(allan["N"].get<double>(), n_true, 0.10 * n_true) << ax;
+    // Bias instability within a factor 1.5 of the simulator's bias process:
+    // a Gauss-Markov bias of std sigma reads B = 0.62 sigma / 0.664 = 0.93
+    // sigma on the Allan plot, so sigma is the hidden value to compare with.
+    const double ratio = allan["B"].get<double>() / gm_sigma;
+    EXPECT_LT(ratio, 1.5) << ax;
+    EXPECT_GT(ratio, 1.0 / 1.5) << ax;
+  }
+  // calib.json has the schema the EKF reads.
+  EXPECT_EQ(calib["denoiser"]["wavelet"], "db4");
+  EXPECT_EQ(calib["denoiser"]["levels"], 3);
+  EXPECT_NEAR(calib["denoiser"]["sample_rate_hz"].get<double>(), 40.0, 1e-6);
+  for (const char* ax : {"ax", "ay", "az", "gx", "gy", "gz"}) {
+    const json& a = calib["axes"][ax];
+    ASSERT_TRUE(a.contains("gm")) << ax;
+    EXPECT_GT(a["gm"]["variance"].get<double>(), 0.0);
+    EXPECT_TRUE(a["gm"].contains("tau_s"));
+    for (const char* m : {"yule_walker", "covariance", "burg"}) {
+      const json& list = a["ar"][m];
+      ASSERT_EQ(list.size(), 10u) << ax << " " << m;
+      for (std::size_t p = 1; p <= 10; ++p) {
+        ASSERT_EQ(list[p - 1]["a"].size(), p + 1);
+        EXPECT_EQ(list[p - 1]["a"][0], 1.0);
+        EXPECT_GT(list[p - 1]["variance"].get<double>(), 0.0);
+      }
+    }
+    EXPECT_EQ(a["allan"]["tau_s"].size(), a["allan"]["adev"].size());
+    for (const char* t : {"N", "B", "K"}) EXPECT_TRUE(a["allan"].contains(t));
+    EXPECT_EQ(a["model"]["method"], "burg");
+    EXPECT_EQ(a["model"]["order"], 3);
+    EXPECT_EQ(a["model"]["a"], a["ar"]["burg"][2]["a"]);
+    EXPECT_TRUE(a.contains("turn_on_bias"));
+  }
+  // The turn-on bias is the mean: az of a level bench is about -g.
+  EXPECT_NEAR(calib["axes"]["az"]["turn_on_bias"].get<double>(), -9.8, 0.3);
+  EXPECT_EQ(calib["sessions"].size(), 1u);
+
+  // The simulator adds a periodic-random component (a damped resonator) on
+  // every axis: the report must name it as what GM1 misses.
+  std::ifstream in(dir_->file("report") + "/report.md");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("GM1 misses the periodic component near"), std::string::npos) << text;
+  for (const char* f : {"ar_variance.csv", "ar_coefficients.csv", "gm_vs_ar.csv", "acf_s1_ax.csv", "allan_s1_gz.csv"}) {
+    EXPECT_TRUE(std::ifstream(dir_->file("report") + "/" + f).good()) << f;
+  }
+}
+
+TEST(CalibrateCli, MissingDatasetIsRuntimeErrorNamingTheFile) {
+  TempDir dir;
+  const auto r = run_sinu({"calibrate", "--in", dir.file("nope"), "--out", dir.file("c.json"), "--no-denoise"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("imu.csv"), std::string::npos) << r.err;
+}
+
+TEST(CalibrateCli, MalformedRowNamesLineAndField) {
+  TempDir dir;
+  std::string csv = "t,ax,ay,az,gx,gy,gz,mx,my,mz,temp\n";
+  for (int i = 0; i < 1500; ++i) {
+    csv += std::to_string(100.0 + 0.025 * i) + ",0.01,0.02,-9.8,0.001,0.002,0.003,20,0,40,25\n";
+  }
+  csv += "137.5,0.01,abc,-9.8,0.001,0.002,0.003,20,0,40,25\n";
+  std::filesystem::create_directories(dir.path() / "bad");
+  dir.write("bad/imu.csv", csv);
+  const auto r = run_sinu({"calibrate", "--in", dir.file("bad"), "--out", dir.file("c.json"), "--no-denoise"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find(":1502:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("ay"), std::string::npos) << r.err;
+}
+
+TEST(CalibrateCli, TooShortSessionAndBadOptionsAreRefused) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path() / "short");
+  dir.write("short/imu.csv", "t,ax,ay,az,gx,gy,gz,mx,my,mz,temp\n1,0,0,-9.8,0,0,0,,,,\n");
+  auto r = run_sinu({"calibrate", "--in", dir.file("short"), "--out", dir.file("c.json"), "--no-denoise"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("at least"), std::string::npos) << r.err;
+  r = run_sinu({"calibrate", "--in", dir.file("short"), "--out", dir.file("c.json"), "--model", "burg:11"});
+  EXPECT_EQ(r.exit_code, 2);
+  r = run_sinu({"calibrate", "--in", dir.file("short"), "--out", dir.file("c.json"), "--wavelet", "sym8"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("sym8"), std::string::npos) << r.err;
+  r = run_sinu({"calibrate", "--out", dir.file("c.json")});
+  EXPECT_EQ(r.exit_code, 2);
+}
+
+}  // namespace
