@@ -1,5 +1,6 @@
 #include "estimator/align/coarse_alignment.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "estimator/earth/wgs84.hpp"
@@ -11,6 +12,7 @@ void CoarseAlignment::reset_window() {
   sum_f_.setZero();
   sum_f2_.setZero();
   sum_w_.setZero();
+  sum_w2_.setZero();
   max_w_.setZero();
   window_s_ = 0.0;
   sum_temp_ = 0.0;
@@ -29,6 +31,7 @@ void CoarseAlignment::add_imu(const ImuSample& s, double dt) {
     sum_f_ += f;
     sum_f2_ += f.cwiseAbs2();
     sum_w_ += w;
+    sum_w2_ += w.cwiseAbs2();
     sum_temp_ += s.has_temp ? s.temp_degC : 0.0;
     ++count_;
     window_s_ += dt;
@@ -46,6 +49,10 @@ void CoarseAlignment::add_imu(const ImuSample& s, double dt) {
     q_level_ = quat_from_euler(roll, pitch, 0.0);
     q_now_ = q_level_;
     mean_rate_ = sum_w_ / n;
+    // Standard error of the mean, white-noise assumption; floor 1e-5 rad/s
+    // (2 deg/h) for correlated noise the window cannot see.
+    const double var_w = (sum_w2_ / n - mean_rate_.cwiseAbs2()).maxCoeff();
+    mean_rate_sigma_ = std::sqrt(std::max(var_w, 0.0) / n + 1e-10);
     temp_ref_ = sum_temp_ / n;
     status_ = AlignStatus::Levelled;
     return;
@@ -63,7 +70,8 @@ bool CoarseAlignment::add_gnss(const GnssObservation& z, double t_now, Alignment
   const Eigen::Quaterniond rot_down(Eigen::AngleAxisd(course - yaw_now, Eigen::Vector3d::UnitZ()));
   // The rest attitude now has a heading too: remove Earth rate from the turn-on bias.
   const Eigen::Quaterniond q_rest = rot_down * q_level_;
-  out.gyro_turn_on_bias_rad_s = mean_rate_ - q_rest.conjugate() * wgs84::omega_ie_n(z.lat_rad);
+  out.gyro_bias_sigma_rad_s = mean_rate_sigma_;
+  out.gyro_bias_rad_s = mean_rate_ - q_rest.conjugate() * wgs84::omega_ie_n(z.lat_rad);
   out.nav.q_nb = (rot_down * q_now_).normalized();
   out.nav.v_n_m_s = Eigen::Vector3d(z.v_ne_m_s.x(), z.v_ne_m_s.y(), 0.0);
   out.nav.lat_rad = z.lat_rad;

@@ -22,7 +22,8 @@ struct AlignmentConfig {
 
 struct AlignmentResult {
   NavState nav;
-  Eigen::Vector3d gyro_turn_on_bias_rad_s = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gyro_bias_rad_s = Eigen::Vector3d::Zero();  // mean rate at rest minus Earth rate
+  double gyro_bias_sigma_rad_s = 0.0;  // from the window's sample scatter (and Earth rate if unknown)
   double temp_ref_degC = 0.0;
 };
 
@@ -40,13 +41,14 @@ class CoarseAlignment {
 
   AlignmentConfig cfg_;
   AlignStatus status_ = AlignStatus::WaitingForRest;
-  Eigen::Vector3d sum_f_, sum_f2_, sum_w_;
+  Eigen::Vector3d sum_f_, sum_f2_, sum_w_, sum_w2_;
   Eigen::Vector3d max_w_;
   double window_s_ = 0.0, sum_temp_ = 0.0;
   long count_ = 0;
   Eigen::Quaterniond q_level_ = Eigen::Quaterniond::Identity();  // at rest, yaw 0
   Eigen::Quaterniond q_now_ = Eigen::Quaterniond::Identity();    // carried by the gyros
   Eigen::Vector3d mean_rate_ = Eigen::Vector3d::Zero();
+  double mean_rate_sigma_ = 0.0;
   double temp_ref_ = 0.0;
 };
 

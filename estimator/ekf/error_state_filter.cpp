@@ -1,5 +1,6 @@
 #include "estimator/ekf/error_state_filter.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "estimator/earth/wgs84.hpp"
@@ -146,13 +147,23 @@ BodyRates ErrorStateFilter::compensate(const ImuSample& raw) const {
   out.specific_force_b_m_s2 =
       (Eigen::Vector3d::Ones() - accel_scale_).cwiseProduct(raw.specific_force_b_m_s2 - ba - accel_temp_ * dT);
   out.angular_rate_b_rad_s = (Eigen::Vector3d::Ones() - gyro_scale_)
-                                 .cwiseProduct(raw.angular_rate_b_rad_s - gyro_turn_on_ - bg - gyro_temp_ * dT);
+                                 .cwiseProduct(raw.angular_rate_b_rad_s - bg - gyro_temp_ * dT);
   return out;
 }
 
-double ErrorStateFilter::sensor_error(Eigen::Index axis) const {
-  const double turn_on = axis >= sensor_axis::kFirstGyro ? gyro_turn_on_(axis - sensor_axis::kFirstGyro) : 0.0;
-  return turn_on + sensor_hat_(hat_index(axis));
+double ErrorStateFilter::sensor_error(Eigen::Index axis) const { return sensor_hat_(hat_index(axis)); }
+
+void ErrorStateFilter::seed_gyro_bias(const Eigen::Vector3d& bias, double sigma) {
+  const Eigen::Index p = layout_.order;
+  for (Eigen::Index i = 0; i < 3; ++i) {
+    const Eigen::Index axis = sensor_axis::kFirstGyro + i;
+    sensor_hat_.segment(hat_index(axis), p).setConstant(bias(i));
+    const Eigen::Index s = layout_.sensor_state(axis);
+    // Keep the block's correlation structure, shrink it to the measured uncertainty.
+    const double scale = P_(s, s) > 0.0 ? std::min(1.0, sigma * sigma / P_(s, s)) : 0.0;
+    P_.block(s, 0, p, P_.cols()) *= std::sqrt(scale);
+    P_.block(0, s, P_.rows(), p) *= std::sqrt(scale);
+  }
 }
 
 double ErrorStateFilter::sensor_error_sigma(Eigen::Index axis) const {

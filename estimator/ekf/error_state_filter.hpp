@@ -42,14 +42,14 @@ class ErrorStateFilter {
   /// sensor/effect estimates, then zeroes it.
   void feedback(StateVec& dx, NavState& nav);
 
-  /// Raw sample -> compensated body rates (turn-on gyro bias, sensor-error
-  /// states, scale, temperature coefficients).
+  /// Raw sample -> compensated body rates (sensor-error states, scale,
+  /// temperature coefficients).
   BodyRates compensate(const ImuSample& raw) const;
 
   const StateLayout& layout() const { return layout_; }
   StateMat& P() { return P_; }
   const StateMat& P() const { return P_; }
-  /// Current estimated error of a sensor axis (turn-on bias included) [m/s^2 | rad/s].
+  /// Current estimated error of a sensor axis [m/s^2 | rad/s].
   double sensor_error(Eigen::Index axis) const;
   double sensor_error_sigma(Eigen::Index axis) const;
   /// Nominal value of effect component i (scale [-], lever arm [m], ...).
@@ -58,7 +58,9 @@ class ErrorStateFilter {
   Eigen::Vector3d lever_arm_b_m() const { return lever_arm_b_; }
   double gps_latency_s() const { return latency_s_; }
 
-  void set_turn_on_gyro_bias(const Eigen::Vector3d& b) { gyro_turn_on_ = b; }
+  /// Seeds the gyro error states with the bias measured at rest (all lags of
+  /// an AR block get the same value) and its uncertainty [rad/s].
+  void seed_gyro_bias(const Eigen::Vector3d& bias_rad_s, double sigma_rad_s);
   void set_lever_arm(const Eigen::Vector3d& l) { lever_arm_b_ = l; }
   void set_gps_latency(double s) { latency_s_ = s; }
   void set_reference_temperature(double t) { temp_ref_degC_ = t; }
@@ -75,7 +77,6 @@ class ErrorStateFilter {
   StateVec sensor_hat_;  // mean of the sensor-error states (size sensor.size)
   std::array<AxisBlock, kSensorAxes> ar_step_{};  // companion matrices
   double ar_clock_s_ = 0.0;
-  Eigen::Vector3d gyro_turn_on_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d accel_scale_ = Eigen::Vector3d::Zero(), gyro_scale_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d accel_temp_ = Eigen::Vector3d::Zero(), gyro_temp_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d lever_arm_b_ = Eigen::Vector3d::Zero();

@@ -75,7 +75,7 @@ void Navigator::process(const ImuSample& s) {
       gnss_.pop();
       if (alignment_.add_gnss(z, s.t_s, res)) {
         nav_ = res.nav;
-        filter_.set_turn_on_gyro_bias(res.gyro_turn_on_bias_rad_s);
+        filter_.seed_gyro_bias(res.gyro_bias_rad_s, res.gyro_bias_sigma_rad_s);
         filter_.set_reference_temperature(res.temp_ref_degC);
         break;
       }
