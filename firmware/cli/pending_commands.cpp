@@ -19,7 +19,6 @@ constexpr Pending kPending[] = {
     {"simulate", "Simulate a UAV flight or a static bench session as a dataset folder", 3},
     {"denoise", "Wavelet-denoise a dataset's IMU channels", 4},
     {"calibrate", "Fit GM, AR and Allan noise models to a static session (bench calibration)", 5},
-    {"replay", "Replay a dataset through the INS/EKF and write the navigation solution", 6},
     {"diagnose", "Compare the model with the measurements and name the missing effect", 6},
     {"record", "Record raw HAL traffic from the board's sensors", 7},
     {"convert", "Convert a raw HAL recording to a dataset folder and back", 7},
