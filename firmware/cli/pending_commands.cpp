@@ -16,7 +16,6 @@ struct Pending {
 };
 
 constexpr Pending kPending[] = {
-    {"simulate", "Simulate a UAV flight or a static bench session as a dataset folder", 3},
     {"denoise", "Wavelet-denoise a dataset's IMU channels", 4},
     {"calibrate", "Fit GM, AR and Allan noise models to a static session (bench calibration)", 5},
     {"diagnose", "Compare the model with the measurements and name the missing effect", 6},

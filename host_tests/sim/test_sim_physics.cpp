@@ -1,0 +1,195 @@
+// The simulator's ideal sensor outputs against what truth.csv implies,
+// computed here independently: finite differences of velocity and attitude,
+// plus gravity, Earth rate and transport rate from the test's own Earth model.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "host_tests/sim/sim_test_support.hpp"
+
+using namespace sinu;
+using namespace sinu::test;
+namespace tc = io::truth_col;
+namespace ic = io::imu_col;
+
+namespace {
+
+// Which terms of the specific-force equation the expectation includes; the
+// tests switch one off to show it is really present in the data.
+struct Terms {
+  bool coriolis = true, transport = true, gravity_height = true;
+};
+
+// 5-point central difference of column `col` at row k (error O(dt^4)).
+double derivative(const std::vector<io::CsvRow>& r, std::size_t k, std::size_t col, double dt) {
+  return (r[k - 2].value[col] - 8.0 * r[k - 1].value[col] + 8.0 * r[k + 1].value[col] - r[k + 2].value[col]) /
+         (12.0 * dt);
+}
+
+Eigen::Vector3d velocity(const io::CsvRow& r) { return triple(r, tc::vn); }
+
+Eigen::Vector3d expected_specific_force(const std::vector<io::CsvRow>& tr, std::size_t k, double dt, Terms terms) {
+  const io::CsvRow& r = tr[k];
+  const double lat = r.value[tc::lat] * kDeg, h = r.value[tc::h];
+  const Eigen::Vector3d v = velocity(r);
+  const Eigen::Vector3d dv(derivative(tr, k, tc::vn, dt), derivative(tr, k, tc::ve, dt), derivative(tr, k, tc::vd, dt));
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();
+  if (terms.coriolis) w += 2.0 * ref::earth_rate_n(lat);
+  if (terms.transport) w += ref::transport_rate_n(lat, h, v);
+  const double g = ref::gravity(lat, terms.gravity_height ? h : 0.0);
+  return ref::C_nb_of(r).transpose() * (dv + w.cross(v) - Eigen::Vector3d(0.0, 0.0, g));
+}
+
+// omega_nb_b from the derivative of the DCM: skew(w) = C_bn dC_nb/dt.
+Eigen::Vector3d omega_nb_b(const std::vector<io::CsvRow>& tr, std::size_t k, double dt) {
+  Eigen::Matrix3d c[5];
+  for (int j = 0; j < 5; ++j) {
+    io::CsvRow r = tr[k + static_cast<std::size_t>(j) - 2];
+    // Unwrap yaw against the centre row so +-180 deg does not jump.
+    r.value[tc::yaw] = tr[k].value[tc::yaw] + std::remainder(r.value[tc::yaw] - tr[k].value[tc::yaw], 360.0);
+    c[j] = ref::C_nb_of(r);
+  }
+  const Eigen::Matrix3d dc = (c[0] - 8.0 * c[1] + 8.0 * c[3] - c[4]) / (12.0 * dt);
+  const Eigen::Matrix3d s = c[2].transpose() * dc;
+  return {0.5 * (s(2, 1) - s(1, 2)), 0.5 * (s(0, 2) - s(2, 0)), 0.5 * (s(1, 0) - s(0, 1))};
+}
+
+Eigen::Vector3d expected_rate(const std::vector<io::CsvRow>& tr, std::size_t k, double dt, Terms terms) {
+  const io::CsvRow& r = tr[k];
+  const double lat = r.value[tc::lat] * kDeg, h = r.value[tc::h];
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();
+  if (terms.coriolis) w += ref::earth_rate_n(lat);
+  if (terms.transport) w += ref::transport_rate_n(lat, h, velocity(r));
+  return omega_nb_b(tr, k, dt) + ref::C_nb_of(r).transpose() * w;
+}
+
+// Residuals of a whole flight, averaged over windows of `window` samples
+// (averaging removes the print-rounding noise that differentiation amplifies).
+struct Residuals {
+  double max_window = 0.0, rms_window = 0.0;
+};
+
+template <class Expected>
+Residuals residuals(const std::vector<io::CsvRow>& imu, const std::vector<io::CsvRow>& tr, std::size_t first_col,
+                    std::size_t window, Expected expected) {
+  Residuals out;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  double sq = 0.0;
+  std::size_t n = 0, windows = 0;
+  for (std::size_t k = 2; k + 2 < tr.size(); ++k) {
+    sum += triple(imu[k], first_col) - expected(k);
+    if (++n == window) {
+      const Eigen::Vector3d mean = sum / static_cast<double>(n);
+      out.max_window = std::max(out.max_window, mean.cwiseAbs().maxCoeff());
+      sq += mean.squaredNorm() / 3.0;
+      ++windows;
+      sum.setZero();
+      n = 0;
+    }
+  }
+  out.rms_window = std::sqrt(sq / static_cast<double>(windows));
+  return out;
+}
+
+class FlightPhysics : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    run_ = new SimRun;
+    run(*run_, ideal_flight(11, 900.0));
+    imu_ = new std::vector<io::CsvRow>(run_->imu());
+    truth_ = new std::vector<io::CsvRow>(run_->truth());
+  }
+  static void TearDownTestSuite() {
+    delete imu_;
+    delete truth_;
+    delete run_;
+  }
+  static constexpr double kDt = 1.0 / 40.0;
+  static constexpr std::size_t kWindow = 40;  // 1 s
+  static SimRun* run_;
+  static std::vector<io::CsvRow>* imu_;
+  static std::vector<io::CsvRow>* truth_;
+
+  Residuals force(Terms t) const {
+    return residuals(*imu_, *truth_, ic::ax, kWindow,
+                     [&](std::size_t k) { return expected_specific_force(*truth_, k, kDt, t); });
+  }
+  Residuals rate(Terms t) const {
+    return residuals(*imu_, *truth_, ic::gx, kWindow, [&](std::size_t k) { return expected_rate(*truth_, k, kDt, t); });
+  }
+};
+SimRun* FlightPhysics::run_ = nullptr;
+std::vector<io::CsvRow>* FlightPhysics::imu_ = nullptr;
+std::vector<io::CsvRow>* FlightPhysics::truth_ = nullptr;
+
+}  // namespace
+
+TEST_F(FlightPhysics, TruthAndImuShareTheClockAndTheFlightIsAPaperLikeUav) {
+  ASSERT_EQ(imu_->size(), truth_->size());
+  for (std::size_t k = 0; k < imu_->size(); ++k) ASSERT_EQ((*imu_)[k].t(), (*truth_)[k].t());
+  EXPECT_GT(truth_->front().t(), 0.0);  // the board clock does not start at zero
+  double v_max = 0.0, bank_max = 0.0, agl_max = 0.0;
+  const double ground = truth_->front().value[tc::h];
+  for (const auto& r : *truth_) {
+    v_max = std::max(v_max, velocity(r).head<2>().norm());
+    bank_max = std::max(bank_max, std::abs(r.value[tc::roll]));
+    agl_max = std::max(agl_max, r.value[tc::h] - ground);
+  }
+  EXPECT_GT(v_max, 35.0);  // ~40 m/s cruise (145 km/h), speed changes 33-47 m/s
+  EXPECT_LT(v_max, 48.0);
+  EXPECT_GE(bank_max, 15.0);  // coordinated turns of 15-35 deg bank
+  EXPECT_LE(bank_max, 35.0 + 1e-6);
+  EXPECT_GT(agl_max, 100.0);  // 100-300 m above the ground
+  EXPECT_LT(agl_max, 310.0);
+  // The first minute is still on the ground.
+  for (std::size_t k = 0; k < 40 * 55; ++k) ASSERT_EQ(velocity((*truth_)[k]).norm(), 0.0) << k;
+}
+
+TEST_F(FlightPhysics, SpecificForceMatchesDifferencedTruthWithGravityEarthAndTransportRate) {
+  // Rounding: truth velocity is printed to 1e-4 m/s. Differenced and averaged
+  // over 1 s the mean derivative error is ~ 1e-4 * sqrt(2) / 1 s ~ 1.4e-4 m/s^2
+  // at worst plus the O(dt^4) stencil error (< 1e-6 for these smooth
+  // controls), so 3e-4 m/s^2 is the sampling error bound.
+  const Residuals full = force({});
+  EXPECT_LT(full.max_window, 3e-4);
+  // Each term is really in the data: leaving it out makes the residual grow
+  // well above that bound (Coriolis 2 Omega v ~ 6e-3, transport v^2/R ~ 2.5e-4,
+  // gravity at height instead of the surface 3.1e-6 /m * h).
+  EXPECT_GT(force({.coriolis = false}).max_window, 10 * full.max_window);
+  EXPECT_GT(force({.transport = false}).rms_window, 5 * full.rms_window);
+  EXPECT_GT(force({.gravity_height = false}).max_window, 3 * full.max_window);
+}
+
+TEST_F(FlightPhysics, AngularRateMatchesDifferencedAttitudeWithEarthAndTransportRate) {
+  // Attitude is printed to 1e-6 deg = 1.7e-8 rad; the 5-point derivative
+  // amplifies that to ~2e-7 rad/s per sample and the 1 s mean to well below;
+  // 1e-6 rad/s bounds it (Earth rate is 7.3e-5 rad/s, transport ~6e-6).
+  const Residuals full = rate({});
+  EXPECT_LT(full.max_window, 1e-6);
+  EXPECT_GT(rate({.coriolis = false}).max_window, 20 * full.max_window);
+  EXPECT_GT(rate({.transport = false}).max_window, 3 * full.max_window);
+}
+
+TEST_F(FlightPhysics, PositionFollowsVelocityOnTheEllipsoid) {
+  // d lat/dt = vn / (R_M + h), d lon/dt = ve / ((R_N + h) cos lat), dh/dt = -vd.
+  // lat/lon are printed to 1e-9 deg (0.11 mm): the 5-point derivative error is
+  // < 0.01 m/s per sample; over the flight we compare 1 s means to 2e-3 m/s.
+  double worst = 0.0;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int n = 0;
+  const auto& tr = *truth_;
+  for (std::size_t k = 2; k + 2 < tr.size(); ++k) {
+    const double lat = tr[k].value[tc::lat] * kDeg, h = tr[k].value[tc::h];
+    const Eigen::Vector3d from_position(derivative(tr, k, tc::lat, kDt) * kDeg * (ref::r_meridian(lat) + h),
+                                        derivative(tr, k, tc::lon, kDt) * kDeg * (ref::r_transverse(lat) + h) *
+                                            std::cos(lat),
+                                        -derivative(tr, k, tc::h, kDt));
+    sum += from_position - velocity(tr[k]);
+    if (++n == 40) {
+      worst = std::max(worst, (sum / n).cwiseAbs().maxCoeff());
+      sum.setZero();
+      n = 0;
+    }
+  }
+  EXPECT_LT(worst, 2e-3);
+}
