@@ -15,7 +15,9 @@ int main(int argc, char** argv) {
   sinu::app::Action action;
   sinu::app::add_inspect_command(app, action);
   sinu::app::add_replay_command(app, action);
+  sinu::app::add_calibrate_command(app, action);
   sinu::app::add_simulate_command(app, action);
+  sinu::app::add_denoise_command(app, action);
   sinu::app::add_pending_commands(app, action);
   try {
     app.parse(argc, argv);

@@ -10,7 +10,9 @@ using Action = std::function<int()>;
 
 void add_inspect_command(CLI::App& app, Action& action);
 void add_replay_command(CLI::App& app, Action& action);
+void add_calibrate_command(CLI::App& app, Action& action);
 void add_simulate_command(CLI::App& app, Action& action);
+void add_denoise_command(CLI::App& app, Action& action);
 /// Modes whose issues have not landed: they print which issue and exit 2.
 void add_pending_commands(CLI::App& app, Action& action);
 

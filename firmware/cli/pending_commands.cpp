@@ -16,8 +16,6 @@ struct Pending {
 };
 
 constexpr Pending kPending[] = {
-    {"denoise", "Wavelet-denoise a dataset's IMU channels", 4},
-    {"calibrate", "Fit GM, AR and Allan noise models to a static session (bench calibration)", 5},
     {"diagnose", "Compare the model with the measurements and name the missing effect", 6},
     {"record", "Record raw HAL traffic from the board's sensors", 7},
     {"convert", "Convert a raw HAL recording to a dataset folder and back", 7},

@@ -1,0 +1,128 @@
+// sinu calibrate --in STATIC_DATASET [--in ...] --out calib.json [--report DIR]
+//                [--no-denoise] [--wavelet NAME --levels N] [--model METHOD:P] [--quiet]
+// The paper's Section 3 on static bench data: per axis mean (turn-on bias),
+// denoise, GM1, AR(1..10) by Yule-Walker/Covariance/Burg, Allan deviation.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "firmware/calibration/calib_json.hpp"
+#include "firmware/calibration/calibration_run.hpp"
+#include "firmware/calibration/progress_bar.hpp"
+#include "firmware/calibration/report.hpp"
+#include "firmware/cli/command.hpp"
+#include "firmware/cli/exit_codes.hpp"
+
+namespace sinu::app {
+
+namespace {
+
+// Sessions longer than this get a progress bar (an 8 h session takes seconds).
+constexpr double kLongSession_s = 600.0;
+constexpr std::size_t kRowsPer8h = 1152000;  // 40 Hz; only for the reading bar's scale
+
+struct CalibrateOptions {
+  std::vector<std::string> inputs;
+  std::string out, report_dir, wavelet = "db4", model = "burg:3";
+  int levels = 3;
+  bool no_denoise = false, quiet = false;
+};
+
+bool parse_model(const std::string& text, calib::ModelChoice& m) {
+  const auto colon = text.find(':');
+  if (colon == std::string::npos) return false;
+  const std::string method = text.substr(0, colon);
+  int found = -1;
+  for (std::size_t i = 0; i < calib::kArMethods; ++i)
+    if (method == calib::kArMethodNames[i]) found = static_cast<int>(i);
+  if (found < 0) return false;
+  try {
+    const int p = std::stoi(text.substr(colon + 1));
+    if (p < 1 || p > static_cast<int>(calib::kMaxArOrder)) return false;
+    m.method = static_cast<calib::ArMethod>(found);
+    m.order = static_cast<std::size_t>(p);
+  } catch (const std::exception&) {
+    return false;
+  }
+  return true;
+}
+
+int run_calibrate(const CalibrateOptions& o) {
+  calib::ModelChoice model;
+  if (!parse_model(o.model, model)) {
+    std::fprintf(stderr, "sinu calibrate: --model '%s': expected METHOD:P with METHOD yule_walker|covariance|burg "
+                         "and P in 1..10\n", o.model.c_str());
+    return kExitUsage;
+  }
+  calib::CalibrationRun run;
+  if (o.no_denoise) {
+    run.denoiser = calib::no_denoiser();
+  } else {
+    std::string why;
+    if (!calib::make_wavelet_denoiser(o.wavelet, o.levels, run.denoiser, why)) {
+      std::fprintf(stderr, "sinu calibrate: %s\n", why.c_str());
+      return kExitUsage;
+    }
+  }
+  for (const std::string& in : o.inputs) {
+    calib::StaticSession session;
+    io::Diagnostic err;
+    calib::ProgressBar reading("reading " + in, static_cast<double>(kRowsPer8h), !o.quiet);
+    bool shown = false;
+    const bool ok = calib::load_static_session(in, session, err, [&](std::size_t rows) {
+      shown = true;
+      reading.update(static_cast<double>(rows));
+    });
+    if (shown) reading.finish();
+    if (!ok) {
+      std::fprintf(stderr, "sinu calibrate: %s\n", err.to_string().c_str());
+      return kExitFailure;
+    }
+    if (session.rows_without_imu > 0 || session.gaps > 0) {
+      std::fprintf(stderr, "sinu calibrate: %s: %zu rows without accelerometer/gyro values skipped, %zu gaps in time\n",
+                   in.c_str(), session.rows_without_imu, session.gaps);
+    }
+    calib::ProgressBar fitting("fitting " + in, static_cast<double>(calib::kImuAxes.size()),
+                               !o.quiet && session.duration_s > kLongSession_s);
+    double done = 0.0;
+    run.sessions.push_back(calib::calibrate_session(session, run.denoiser, model, [&] { fitting.update(++done); }));
+    fitting.finish();
+  }
+  std::string why;
+  if (!calib::write_calib_json(run, o.out, why)) {
+    std::fprintf(stderr, "sinu calibrate: %s\n", why.c_str());
+    return kExitFailure;
+  }
+  if (!o.report_dir.empty()) {
+    if (!calib::write_report(run, o.report_dir, why)) {
+      std::fprintf(stderr, "sinu calibrate: %s\n", why.c_str());
+      return kExitFailure;
+    }
+    std::printf("report: %s/report.md (plots: /usr/bin/python3 tools/plot_calibration.py %s)\n", o.report_dir.c_str(),
+                o.report_dir.c_str());
+  }
+  std::printf("calibration: %s (%zu session%s, denoiser: %s, model: %s)\n", o.out.c_str(), run.sessions.size(),
+              run.sessions.size() == 1 ? "" : "s", run.denoiser.name.c_str(), o.model.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_calibrate_command(CLI::App& app, Action& action) {
+  auto o = std::make_shared<CalibrateOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "calibrate", "Fit GM, AR and Allan noise models to a static session (bench calibration)");
+  cmd->add_option("--in", o->inputs, "Static dataset folder (imu.csv); repeat for the cross-dataset comparison")
+      ->required();
+  cmd->add_option("--out", o->out, "calib.json to write")->required();
+  cmd->add_option("--report", o->report_dir, "Folder for report.md and the model-versus-data CSVs");
+  cmd->add_flag("--no-denoise", o->no_denoise, "Fit the raw series (no wavelet denoising)");
+  cmd->add_option("--wavelet", o->wavelet, "Wavelet of the denoiser")->capture_default_str();
+  cmd->add_option("--levels", o->levels, "Decomposition levels of the denoiser")->capture_default_str()
+      ->check(CLI::Range(1, 12));
+  cmd->add_option("--model", o->model, "Model the EKF uses, METHOD:P")->capture_default_str();
+  cmd->add_flag("--quiet", o->quiet, "No progress bar");
+  cmd->callback([&action, o] { action = [o] { return run_calibrate(*o); }; });
+}
+
+}  // namespace sinu::app
