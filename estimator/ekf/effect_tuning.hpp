@@ -18,8 +18,11 @@ struct EffectTuning {
       0.2,     // gps_latency [s]
       0.01,    // accel_temp_bias [m/s^2/degC]
       1e-3,    // gyro_temp_bias [rad/s/degC]
+      0.1,     // accel_bias [m/s^2] (ICM-20948 class: +-0.06..0.2 turn-on)
+      0.01,    // gyro_bias [rad/s] (0.6 deg/s)
   };
-  std::array<double, kEffectCount> random_walk = {1e-6, 1e-6, 0.0, 1e-4, 1e-7, 1e-8};
+  // accel/gyro bias walks: the rate random walk of the simulator's default unit
+  std::array<double, kEffectCount> random_walk = {1e-6, 1e-6, 0.0, 1e-4, 1e-7, 1e-8, 2e-5, 2e-6};
   double sigma(Effect e) const { return initial_sigma[static_cast<std::size_t>(e)]; }
   double walk(Effect e) const { return random_walk[static_cast<std::size_t>(e)]; }
 };

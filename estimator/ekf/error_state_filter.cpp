@@ -65,6 +65,8 @@ void ErrorStateFilter::build_transition(const PredictInput& in, int ar_steps, St
   };
   couple(Effect::AccelScale, V, 1.0, in.specific_force_b_m_s2);
   couple(Effect::GyroScale, A, -1.0, in.angular_rate_b_rad_s);
+  couple(Effect::AccelBias, V, 1.0, Eigen::Vector3d::Ones());
+  couple(Effect::GyroBias, A, -1.0, Eigen::Vector3d::Ones());
   couple(Effect::AccelTempBias, V, 1.0, Eigen::Vector3d::Constant(in.temp_delta_degC));
   couple(Effect::GyroTempBias, A, -1.0, Eigen::Vector3d::Constant(in.temp_delta_degC));
 
@@ -132,6 +134,8 @@ void ErrorStateFilter::feedback(StateVec& dx, NavState& nav) {
   add3(Effect::AccelTempBias, accel_temp_);
   add3(Effect::GyroTempBias, gyro_temp_);
   add3(Effect::LeverArm, lever_arm_b_);
+  add3(Effect::AccelBias, accel_bias_);
+  add3(Effect::GyroBias, gyro_bias_);
   if (L.has(Effect::GpsLatency)) latency_s_ += dx(L.of(Effect::GpsLatency).start);
   dx.setZero();
 }
@@ -140,8 +144,8 @@ BodyRates ErrorStateFilter::compensate(const ImuSample& raw) const {
   const double dT = raw.has_temp ? raw.temp_degC - temp_ref_degC_ : 0.0;
   Eigen::Vector3d ba, bg;
   for (Eigen::Index i = 0; i < 3; ++i) {
-    ba(i) = sensor_hat_(hat_index(sensor_axis::kFirstAccel + i));
-    bg(i) = sensor_hat_(hat_index(sensor_axis::kFirstGyro + i));
+    ba(i) = sensor_hat_(hat_index(sensor_axis::kFirstAccel + i)) + accel_bias_(i);
+    bg(i) = sensor_hat_(hat_index(sensor_axis::kFirstGyro + i)) + gyro_bias_(i);
   }
   BodyRates out;
   out.specific_force_b_m_s2 =
@@ -154,6 +158,12 @@ BodyRates ErrorStateFilter::compensate(const ImuSample& raw) const {
 double ErrorStateFilter::sensor_error(Eigen::Index axis) const { return sensor_hat_(hat_index(axis)); }
 
 void ErrorStateFilter::seed_gyro_bias(const Eigen::Vector3d& bias, double sigma) {
+  if (layout_.has(Effect::GyroBias)) {
+    gyro_bias_ = bias;
+    const Eigen::Index s = layout_.of(Effect::GyroBias).start;
+    for (Eigen::Index i = 0; i < 3; ++i) P_(s + i, s + i) = std::min(P_(s + i, s + i), sigma * sigma);
+    return;
+  }
   const Eigen::Index p = layout_.order;
   for (Eigen::Index i = 0; i < 3; ++i) {
     const Eigen::Index axis = sensor_axis::kFirstGyro + i;
@@ -179,6 +189,8 @@ double ErrorStateFilter::effect(Effect e, Eigen::Index i) const {
     case Effect::GpsLatency: return latency_s_;
     case Effect::AccelTempBias: return accel_temp_(i);
     case Effect::GyroTempBias: return gyro_temp_(i);
+    case Effect::AccelBias: return accel_bias_(i);
+    case Effect::GyroBias: return gyro_bias_(i);
   }
   return 0.0;
 }

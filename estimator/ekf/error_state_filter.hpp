@@ -58,8 +58,9 @@ class ErrorStateFilter {
   Eigen::Vector3d lever_arm_b_m() const { return lever_arm_b_; }
   double gps_latency_s() const { return latency_s_; }
 
-  /// Seeds the gyro error states with the bias measured at rest (all lags of
-  /// an AR block get the same value) and its uncertainty [rad/s].
+  /// Seeds the gyro bias measured at rest and its uncertainty [rad/s]: into
+  /// the gyro_bias states when active, else into the sensor-error states
+  /// (all lags of an AR block get the same value).
   void seed_gyro_bias(const Eigen::Vector3d& bias_rad_s, double sigma_rad_s);
   void set_lever_arm(const Eigen::Vector3d& l) { lever_arm_b_ = l; }
   void set_gps_latency(double s) { latency_s_ = s; }
@@ -79,6 +80,7 @@ class ErrorStateFilter {
   double ar_clock_s_ = 0.0;
   Eigen::Vector3d accel_scale_ = Eigen::Vector3d::Zero(), gyro_scale_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d accel_temp_ = Eigen::Vector3d::Zero(), gyro_temp_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d accel_bias_ = Eigen::Vector3d::Zero(), gyro_bias_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d lever_arm_b_ = Eigen::Vector3d::Zero();
   double latency_s_ = 0.0;
   double temp_ref_degC_ = 0.0;

@@ -27,12 +27,18 @@ inline constexpr Eigen::Index kFirstGyro = gx;
 }  // namespace sensor_axis
 
 /// Optional effect states, named as in the project's effect vocabulary.
-enum class Effect : std::uint8_t { AccelScale, GyroScale, LeverArm, GpsLatency, AccelTempBias, GyroTempBias };
-inline constexpr std::size_t kEffectCount = 6;
+/// accel_bias / gyro_bias are random-constant (turn-on) biases: calib.json's
+/// GM/AR models describe the zero-mean part of the error of a static session,
+/// so a unit's per-power-on bias needs its own states.
+enum class Effect : std::uint8_t {
+  AccelScale, GyroScale, LeverArm, GpsLatency, AccelTempBias, GyroTempBias, AccelBias, GyroBias
+};
+inline constexpr std::size_t kEffectCount = 8;
 inline constexpr std::array<const char*, kEffectCount> kEffectNames = {
-    "accel_scale", "gyro_scale", "lever_arm", "gps_latency", "accel_temp_bias", "gyro_temp_bias"};
-inline constexpr std::array<Eigen::Index, kEffectCount> kEffectDims = {3, 3, 3, 1, 3, 3};
-inline constexpr Eigen::Index kMaxEffectStates = 16;
+    "accel_scale", "gyro_scale", "lever_arm", "gps_latency", "accel_temp_bias", "gyro_temp_bias",
+    "accel_bias", "gyro_bias"};
+inline constexpr std::array<Eigen::Index, kEffectCount> kEffectDims = {3, 3, 3, 1, 3, 3, 3, 3};
+inline constexpr Eigen::Index kMaxEffectStates = 22;
 
 inline constexpr Eigen::Index kMaxStates = kNavStates + kSensorAxes * kMaxArOrder + kMaxEffectStates;
 

@@ -75,6 +75,7 @@ void Navigator::process(const ImuSample& s) {
       gnss_.pop();
       if (alignment_.add_gnss(z, s.t_s, res)) {
         nav_ = res.nav;
+        last_position_accepted_t_ = s.t_s;
         filter_.seed_gyro_bias(res.gyro_bias_rad_s, res.gyro_bias_sigma_rad_s);
         filter_.set_reference_temperature(res.temp_ref_degC);
         break;
@@ -120,7 +121,12 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
       continue;
     }
     if (z.has_position) {
-      fuse(AidingSource::GnssPosition, gnss_position_measurement(filter_, nav_, dt_back, z, cfg_.gate_sigma), t_meas);
+      if (fuse(AidingSource::GnssPosition, gnss_position_measurement(filter_, nav_, dt_back, z, cfg_.gate_sigma), t_meas)) {
+        last_position_accepted_t_ = t_meas;
+      } else if (t_meas - last_position_accepted_t_ > cfg_.reset_after_rejected_s) {
+        reset_to_gnss(z, dt_back);
+        last_position_accepted_t_ = t_meas;
+      }
     }
     if (z.has_velocity && cfg_.fuse_velocity) {
       fuse(AidingSource::GnssVelocity,
@@ -131,7 +137,29 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
   }
 }
 
-void Navigator::fuse(AidingSource src, const Measurement& m, double t_meas) {
+void Navigator::reset_to_gnss(const GnssObservation& z, double dt_back) {
+  ++counters_.gnss_resets;
+  const StateLayout& L = filter_.layout();
+  const Eigen::Vector3d lever_n = nav_.C_nb() * filter_.lever_arm_b_m();
+  const double rm = wgs84::meridian_radius_m(z.lat_rad) + z.h_m;
+  const double rn = wgs84::transverse_radius_m(z.lat_rad) + z.h_m;
+  // IMU position = antenna - C l, carried forward to the filter time.
+  const Eigen::Vector3d offset = -lever_n + nav_.v_n_m_s * dt_back;
+  nav_.lat_rad = z.lat_rad + offset.x() / rm;
+  nav_.lon_rad = z.lon_rad + offset.y() / (rn * std::cos(z.lat_rad));
+  nav_.h_m = z.h_m - offset.z();
+  if (z.has_velocity) nav_.v_n_m_s.head<2>() = z.v_ne_m_s;
+  StateMat& P = filter_.P();
+  auto reset_block = [&P](Eigen::Index start, const Eigen::Vector3d& sigma) {
+    P.middleRows(start, 3).setZero();
+    P.middleCols(start, 3).setZero();
+    for (Eigen::Index i = 0; i < 3; ++i) P(start + i, start + i) = sigma(i) * sigma(i);
+  };
+  reset_block(L.pos.start, z.sigma_ned_m);
+  if (z.has_velocity) reset_block(L.vel.start, cfg_.initial.vel_ned_m_s);
+}
+
+bool Navigator::fuse(AidingSource src, const Measurement& m, double t_meas) {
   InnovationRecord rec;
   rec.t_s = t_meas;
   rec.source = src;
@@ -144,6 +172,7 @@ void Navigator::fuse(AidingSource src, const Measurement& m, double t_meas) {
     ++counters_.rejected[i];
   }
   if (observer_) observer_->on_innovation(rec);
+  return rec.result.accepted;
 }
 
 void Navigator::emit() {

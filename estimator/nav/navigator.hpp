@@ -38,6 +38,7 @@ struct NavigatorConfig {
   double gps_latency_s = 0.0;        // configured latency (initial value when estimated)
   Eigen::Vector3d lever_arm_b_m = Eigen::Vector3d::Zero();  // antenna minus IMU, body FRD
   bool fuse_velocity = true;
+  double reset_after_rejected_s = 5.0;  // position rejected this long: reset to GNSS (as PX4 does)
   double max_imu_gap_s = 0.5;        // longer gaps are counted (and bridged)
 };
 
@@ -60,6 +61,7 @@ struct NavCounters {
   std::uint64_t imu_non_increasing = 0; // dropped: time not after the previous sample
   std::uint64_t imu_gaps = 0;
   std::uint64_t imu_invalid = 0;        // non-finite values
+  std::uint64_t gnss_resets = 0;        // position/velocity reset to GNSS after prolonged rejection
 };
 
 class NavObserver {
@@ -87,7 +89,8 @@ class Navigator {
  private:
   void process(const ImuSample& s);
   void fuse_due_gnss(double t_now, double dt, const BodyRates& now);
-  void fuse(AidingSource src, const Measurement& m, double t_meas);
+  bool fuse(AidingSource src, const Measurement& m, double t_meas);
+  void reset_to_gnss(const GnssObservation& z, double dt_back);
   void emit();
 
   NavigatorConfig cfg_;
@@ -103,6 +106,7 @@ class Navigator {
   bool have_prev_ = false;
   Eigen::Vector3d accel_n_ = Eigen::Vector3d::Zero();
   StateVec dx_;
+  double last_position_accepted_t_ = 0.0;
   NavOutput out_;
   NavCounters counters_;
 };

@@ -344,7 +344,7 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
   sj["rejected"] = {{"gnss_position", c.rejected[0]}, {"gnss_velocity", c.rejected[1]}};
   sj["accepted"] = {{"gnss_position", c.accepted[0]}, {"gnss_velocity", c.accepted[1]}};
   sj["gnss"] = {{"epochs", epochs}, {"used", used}, {"dropped_outage", dropped_outage}, {"dropped_period", dropped_period},
-                {"late", c.gnss_late}, {"overflow", c.gnss_overflow}};
+                {"late", c.gnss_late}, {"overflow", c.gnss_overflow}, {"resets", c.gnss_resets}};
   sj["corrupt_sentences"] = has_gps ? gps.corrupt() : 0;
   sj["imu"] = {{"incomplete_rows", imu_incomplete}, {"non_increasing", c.imu_non_increasing}, {"gaps", c.imu_gaps},
                {"invalid", c.imu_invalid}};
