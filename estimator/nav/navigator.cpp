@@ -8,6 +8,10 @@
 
 namespace sinu::est {
 
+namespace {
+constexpr double kUngated = 1e9;  // gate [sigma] that accepts any finite innovation
+}  // namespace
+
 void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefilter* prefilter) {
   cfg_ = cfg;
   observer_ = observer;
@@ -121,10 +125,16 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
       continue;
     }
     if (z.has_position) {
-      if (fuse(AidingSource::GnssPosition, gnss_position_measurement(filter_, nav_, dt_back, z, cfg_.gate_sigma), t_meas)) {
+      Measurement m = gnss_position_measurement(filter_, nav_, dt_back, z, cfg_.gate_sigma);
+      if (fuse(AidingSource::GnssPosition, m, t_meas)) {
         last_position_accepted_t_ = t_meas;
       } else if (t_meas - last_position_accepted_t_ > cfg_.reset_after_rejected_s) {
-        reset_to_gnss(z, dt_back);
+        // Rejected for too long: the filter, not the receiver, is wrong. Fuse
+        // this epoch ungated (corrects velocity and attitude through the
+        // correlations too); reset to it only if even that fails.
+        ++counters_.gnss_resets;
+        m.gate_sigma = kUngated;
+        if (!fuse(AidingSource::GnssPosition, m, t_meas)) reset_to_gnss(z, dt_back);
         last_position_accepted_t_ = t_meas;
       }
     }
@@ -138,7 +148,6 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
 }
 
 void Navigator::reset_to_gnss(const GnssObservation& z, double dt_back) {
-  ++counters_.gnss_resets;
   const StateLayout& L = filter_.layout();
   const Eigen::Vector3d lever_n = nav_.C_nb() * filter_.lever_arm_b_m();
   const double rm = wgs84::meridian_radius_m(z.lat_rad) + z.h_m;

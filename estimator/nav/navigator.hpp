@@ -38,7 +38,7 @@ struct NavigatorConfig {
   double gps_latency_s = 0.0;        // configured latency (initial value when estimated)
   Eigen::Vector3d lever_arm_b_m = Eigen::Vector3d::Zero();  // antenna minus IMU, body FRD
   bool fuse_velocity = true;
-  double reset_after_rejected_s = 5.0;  // position rejected this long: reset to GNSS (as PX4 does)
+  double reset_after_rejected_s = 5.0;  // position rejected this long: fuse ungated / reset (as PX4 resets)
   double max_imu_gap_s = 0.5;        // longer gaps are counted (and bridged)
 };
 
@@ -61,7 +61,7 @@ struct NavCounters {
   std::uint64_t imu_non_increasing = 0; // dropped: time not after the previous sample
   std::uint64_t imu_gaps = 0;
   std::uint64_t imu_invalid = 0;        // non-finite values
-  std::uint64_t gnss_resets = 0;        // position/velocity reset to GNSS after prolonged rejection
+  std::uint64_t gnss_resets = 0;        // epochs fused ungated (or reset to) after prolonged rejection
 };
 
 class NavObserver {

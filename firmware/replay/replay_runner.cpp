@@ -326,13 +326,16 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
                 {"truth_points", metrics.compared}};
   json outs = json::array();
   double drift2 = 0.0;
+  std::size_t scored = 0;  // outages with a solution and truth inside them
   for (const OutageDrift& o : metrics.outages) {
     outs.push_back({{"start", o.window.start_s}, {"duration", o.window.duration_s},
                     {"max_drift_h_m", o.points ? json(o.max_drift_h_m) : json(nullptr)}});
+    if (o.points == 0) continue;
     drift2 += o.max_drift_h_m * o.max_drift_h_m;
+    ++scored;
   }
   sj["outages"] = outs;
-  sj["outage_max_drift_h_rms_m"] = metrics.outages.empty() ? json(nullptr) : json(std::sqrt(drift2 / static_cast<double>(metrics.outages.size())));
+  sj["outage_max_drift_h_rms_m"] = scored ? json(std::sqrt(drift2 / static_cast<double>(scored))) : json(nullptr);
   json nis;
   for (std::size_t i = 0; i < est::kAidingSourceCount; ++i) {
     const ChiStats& s = metrics.nis[i];
