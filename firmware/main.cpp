@@ -14,12 +14,13 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "sinu 0.1.0");
   sinu::app::Action action;
   sinu::app::add_inspect_command(app, action);
-  sinu::app::add_denoise_command(app, action);
   sinu::app::add_simulate_command(app, action);
-  sinu::app::add_convert_command(app, action);
-  sinu::app::add_record_command(app, action);
-  sinu::app::add_fly_command(app, action);
+  sinu::app::add_denoise_command(app, action);
   sinu::app::add_calibrate_command(app, action);
+  sinu::app::add_replay_command(app, action);
+  sinu::app::add_record_command(app, action);
+  sinu::app::add_convert_command(app, action);
+  sinu::app::add_fly_command(app, action);
   sinu::app::add_pending_commands(app, action);
   try {
     app.parse(argc, argv);

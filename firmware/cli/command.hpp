@@ -9,14 +9,15 @@ namespace sinu::app {
 using Action = std::function<int()>;
 
 void add_inspect_command(CLI::App& app, Action& action);
-void add_denoise_command(CLI::App& app, Action& action);
-void add_simulate_command(CLI::App& app, Action& action);
 void add_inspect_nmea_command(CLI::App& inspect, Action& action);
 void add_inspect_recording_command(CLI::App& inspect, Action& action);
-void add_convert_command(CLI::App& app, Action& action);
-void add_record_command(CLI::App& app, Action& action);
-void add_fly_command(CLI::App& app, Action& action);
+void add_simulate_command(CLI::App& app, Action& action);
+void add_denoise_command(CLI::App& app, Action& action);
 void add_calibrate_command(CLI::App& app, Action& action);
+void add_replay_command(CLI::App& app, Action& action);
+void add_record_command(CLI::App& app, Action& action);
+void add_convert_command(CLI::App& app, Action& action);
+void add_fly_command(CLI::App& app, Action& action);
 /// Modes whose issues have not landed: they print which issue and exit 2.
 void add_pending_commands(CLI::App& app, Action& action);
 

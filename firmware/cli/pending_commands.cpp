@@ -1,5 +1,5 @@
-// Subcommands whose issues have not landed yet. Each has its --help; running
-// one says which issue brings it and exits 2. None prints made-up output.
+// Subcommands that have not landed yet. Each has its --help; running one says
+// so and exits 2. None prints made-up output.
 #include <cstdio>
 
 #include "firmware/cli/command.hpp"
@@ -12,12 +12,12 @@ namespace {
 struct Pending {
   const char* name;
   const char* description;
-  int issue;
+  const char* status;  // what it waits for
 };
 
 constexpr Pending kPending[] = {
-    {"replay", "Replay a dataset through the INS/EKF and write the navigation solution", 6},
-    {"diagnose", "Compare the model with the measurements and name the missing effect", 6},
+    {"diagnose", "Compare the model with the measurements and name the missing effect",
+     "planned; until then `sinu replay` writes innovations.csv and `sinu calibrate --report` the model-vs-data report"},
 };
 
 }  // namespace
@@ -26,10 +26,10 @@ void add_pending_commands(CLI::App& app, Action& action) {
   for (const Pending& p : kPending) {
     CLI::App* sub = app.add_subcommand(p.name, p.description);
     sub->allow_extras();  // its options are not defined yet; do not reject them
-    sub->footer("Not available yet: this mode arrives with issue #" + std::to_string(p.issue) + ".");
+    sub->footer(std::string("Not available yet: ") + p.status + ".");
     sub->callback([&action, p] {
       action = [p] {
-        std::fprintf(stderr, "sinu %s: not available yet (issue #%d has not landed)\n", p.name, p.issue);
+        std::fprintf(stderr, "sinu %s: not available yet (%s)\n", p.name, p.status);
         return kExitUsage;
       };
     });

@@ -1,0 +1,20 @@
+#pragma once
+// One GNSS epoch as the estimator sees it (the firmware converts a driver
+// GpsFix into this). Position of the antenna, horizontal velocity, course.
+#include <Eigen/Core>
+
+namespace sinu::est {
+
+struct GnssObservation {
+  double arrival_s = 0.0;   // board time the epoch arrived
+  bool has_position = false;
+  double lat_rad = 0.0, lon_rad = 0.0, h_m = 0.0;  // antenna, WGS-84 ellipsoidal
+  Eigen::Vector3d sigma_ned_m = Eigen::Vector3d::Constant(3.0);
+  bool has_velocity = false;
+  Eigen::Vector2d v_ne_m_s = Eigen::Vector2d::Zero();
+  double sigma_vel_m_s = 0.3;
+  double speed_m_s = 0.0;
+  double course_rad = 0.0;
+};
+
+}  // namespace sinu::est

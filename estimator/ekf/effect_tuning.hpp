@@ -1,0 +1,30 @@
+#pragma once
+// Initial uncertainty and random-walk process noise of the optional effect
+// states. Magnitudes chosen to cover consumer MEMS and the simulator's
+// "large enough to matter" draws (scale errors of percent, lever arms of a
+// metre, latencies of a few hundred milliseconds).
+#include <array>
+
+#include "estimator/ekf/state_layout.hpp"
+
+namespace sinu::est {
+
+struct EffectTuning {
+  // per effect: initial sigma [state unit] and random-walk density [unit/sqrt(s)]
+  std::array<double, kEffectCount> initial_sigma = {
+      0.02,    // accel_scale [-] (20000 ppm)
+      0.02,    // gyro_scale [-]
+      1.0,     // lever_arm [m]
+      0.2,     // gps_latency [s]
+      0.01,    // accel_temp_bias [m/s^2/degC]
+      1e-3,    // gyro_temp_bias [rad/s/degC]
+      0.1,     // accel_bias [m/s^2] (ICM-20948 class: +-0.06..0.2 turn-on)
+      0.01,    // gyro_bias [rad/s] (0.6 deg/s)
+  };
+  // accel/gyro bias walks: the rate random walk of the simulator's default unit
+  std::array<double, kEffectCount> random_walk = {1e-6, 1e-6, 0.0, 1e-4, 1e-7, 1e-8, 2e-5, 2e-6};
+  double sigma(Effect e) const { return initial_sigma[static_cast<std::size_t>(e)]; }
+  double walk(Effect e) const { return random_walk[static_cast<std::size_t>(e)]; }
+};
+
+}  // namespace sinu::est

@@ -1,0 +1,204 @@
+#include "estimator/ekf/error_state_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "estimator/earth/wgs84.hpp"
+#include "estimator/ekf/covariance.hpp"
+#include "estimator/ins/rotation.hpp"
+
+namespace sinu::est {
+
+void ErrorStateFilter::init(const StateLayout& layout, const SensorNoise& noise, const EffectTuning& tuning,
+                            const NavUncertainty& nav0) {
+  layout_ = layout;
+  noise_ = noise;
+  tuning_ = tuning;
+  const Eigen::Index n = layout.dim;
+  P_ = StateMat::Zero(n, n);
+  P_.block(layout.pos.start, layout.pos.start, 3, 3) = nav0.pos_ned_m.cwiseAbs2().asDiagonal();
+  P_.block(layout.vel.start, layout.vel.start, 3, 3) = nav0.vel_ned_m_s.cwiseAbs2().asDiagonal();
+  P_.block(layout.att.start, layout.att.start, 3, 3) = nav0.att_rad.cwiseAbs2().asDiagonal();
+  const Eigen::Index p = layout.order;
+  for (Eigen::Index axis = 0; axis < kSensorAxes; ++axis) {
+    const auto k = static_cast<std::size_t>(axis);
+    ar_step_[k] = noise.kind == NoiseModelKind::AutoRegressive ? ar_companion(noise.ar[k], p) : AxisBlock::Identity(1, 1);
+    AxisBlock X = stationary_covariance(noise, axis, p);
+    if (!X.allFinite()) X = AxisBlock::Identity(p, p) * 1.0;  // unstable model: wide, honest prior
+    P_.block(layout.sensor_state(axis), layout.sensor_state(axis), p, p) = X;
+  }
+  for (std::size_t i = 0; i < kEffectCount; ++i) {
+    const Slice& s = layout.effect[i];
+    const double sig = tuning.initial_sigma[i];
+    for (Eigen::Index j = 0; j < s.size; ++j) P_(s.start + j, s.start + j) = sig * sig;
+  }
+  sensor_hat_ = StateVec::Zero(layout.sensor.size);
+  ar_clock_s_ = 0.0;
+}
+
+void ErrorStateFilter::build_transition(const PredictInput& in, int ar_steps, StateMat& Phi, StateVec& q) const {
+  const StateLayout& L = layout_;
+  const NavState& nav = *in.nav;
+  const double dt = in.dt_s;
+  const Eigen::Index n = L.dim;
+  Phi = StateMat::Identity(n, n);
+  q = StateVec::Zero(n);
+  const Eigen::Matrix3d C = nav.C_nb();
+  const Eigen::Vector3d w_ie = wgs84::omega_ie_n(nav.lat_rad);
+  const Eigen::Vector3d w_en = wgs84::omega_en_n(nav.lat_rad, nav.h_m, nav.v_n_m_s);
+  const double g = wgs84::normal_gravity_m_s2(nav.lat_rad, nav.h_m);
+  const double r = std::sqrt(wgs84::meridian_radius_m(nav.lat_rad) * wgs84::transverse_radius_m(nav.lat_rad)) + nav.h_m;
+  const Eigen::Index P = L.pos.start, V = L.vel.start, A = L.att.start;
+
+  Phi.block(P, V, 3, 3) += Eigen::Matrix3d::Identity() * dt;
+  Phi(V + 2, P + 2) += 2.0 * g / r * dt;  // gravity falls with height: d_g_down = +2g/R d_p_down
+  Phi.block(V, V, 3, 3) -= skew(2.0 * w_ie + w_en) * dt;
+  Phi.block(V, A, 3, 3) += skew(in.specific_force_n_m_s2) * dt;
+  Phi.block(A, A, 3, 3) -= skew(w_ie + w_en) * dt;
+  for (Eigen::Index i = 0; i < 3; ++i) {
+    Phi.block(V, L.sensor_state(sensor_axis::kFirstAccel + i), 3, 1) += C.col(i) * dt;
+    Phi.block(A, L.sensor_state(sensor_axis::kFirstGyro + i), 3, 1) -= C.col(i) * dt;
+  }
+  auto couple = [&](Effect e, Eigen::Index row, double sign, const Eigen::Vector3d& scale) {
+    if (!L.has(e)) return;
+    Phi.block(row, L.of(e).start, 3, 3) += sign * C * scale.asDiagonal() * dt;
+  };
+  couple(Effect::AccelScale, V, 1.0, in.specific_force_b_m_s2);
+  couple(Effect::GyroScale, A, -1.0, in.angular_rate_b_rad_s);
+  couple(Effect::AccelBias, V, 1.0, Eigen::Vector3d::Ones());
+  couple(Effect::GyroBias, A, -1.0, Eigen::Vector3d::Ones());
+  couple(Effect::AccelTempBias, V, 1.0, Eigen::Vector3d::Constant(in.temp_delta_degC));
+  couple(Effect::GyroTempBias, A, -1.0, Eigen::Vector3d::Constant(in.temp_delta_degC));
+
+  const double na = noise_.accel_white_m_s2_rthz, ng = noise_.gyro_white_rad_s_rthz;
+  q.segment(V, 3).setConstant(na * na * dt);
+  q.segment(A, 3).setConstant(ng * ng * dt);
+
+  const Eigen::Index p = L.order;
+  for (Eigen::Index axis = 0; axis < kSensorAxes; ++axis) {
+    const auto k = static_cast<std::size_t>(axis);
+    const Eigen::Index s = L.sensor_state(axis);
+    if (noise_.kind == NoiseModelKind::GaussMarkov) {
+      const double phi = std::exp(-dt / noise_.gm[k].tau_s);
+      Phi(s, s) = phi;
+      q(s) = noise_.gm[k].variance * (1.0 - phi * phi);
+    } else if (ar_steps > 0) {
+      AxisBlock F = AxisBlock::Identity(p, p);
+      for (int i = 0; i < ar_steps; ++i) F = (ar_step_[k] * F).eval();
+      Phi.block(s, s, p, p) = F;
+      q(s) = noise_.ar[k].variance * ar_steps;
+    }
+  }
+  for (std::size_t i = 0; i < kEffectCount; ++i) {
+    const Slice& sl = L.effect[i];
+    for (Eigen::Index j = 0; j < sl.size; ++j) q(sl.start + j) = tuning_.random_walk[i] * tuning_.random_walk[i] * dt;
+  }
+}
+
+void ErrorStateFilter::predict(const PredictInput& in) {
+  int ar_steps = 0;
+  if (noise_.kind == NoiseModelKind::AutoRegressive) {
+    ar_clock_s_ += in.dt_s;
+    const double period = noise_.ar_sample_period_s;
+    while (ar_clock_s_ >= period * (1.0 - 1e-6)) {  // tolerance: IMU time stamps jitter by microseconds
+      ar_clock_s_ -= period;
+      ++ar_steps;
+    }
+  }
+  StateMat Phi;
+  StateVec q;
+  build_transition(in, ar_steps, Phi, q);
+  propagate_covariance(P_, Phi, q);
+  // Mean of the sensor-error states follows the same linear dynamics.
+  const Eigen::Index S = layout_.sensor.start;
+  const Eigen::Index m = layout_.sensor.size;
+  sensor_hat_ = (Phi.block(S, S, m, m) * sensor_hat_).eval();
+}
+
+void ErrorStateFilter::feedback(StateVec& dx, NavState& nav) {
+  const StateLayout& L = layout_;
+  const double rm = wgs84::meridian_radius_m(nav.lat_rad) + nav.h_m;
+  const double rn = wgs84::transverse_radius_m(nav.lat_rad) + nav.h_m;
+  const Eigen::Vector3d dp = dx.segment(L.pos.start, 3);
+  nav.lat_rad -= dp.x() / rm;
+  nav.lon_rad -= dp.y() / (rn * std::cos(nav.lat_rad));
+  nav.h_m += dp.z();
+  nav.v_n_m_s -= dx.segment(L.vel.start, 3);
+  nav.q_nb = (quat_from_rotation_vector(dx.segment(L.att.start, 3)) * nav.q_nb).normalized();
+  sensor_hat_ += dx.segment(L.sensor.start, L.sensor.size);
+  auto add3 = [&](Effect e, Eigen::Vector3d& v) {
+    if (L.has(e)) v += dx.segment(L.of(e).start, 3);
+  };
+  add3(Effect::AccelScale, accel_scale_);
+  add3(Effect::GyroScale, gyro_scale_);
+  add3(Effect::AccelTempBias, accel_temp_);
+  add3(Effect::GyroTempBias, gyro_temp_);
+  add3(Effect::LeverArm, lever_arm_b_);
+  add3(Effect::AccelBias, accel_bias_);
+  add3(Effect::GyroBias, gyro_bias_);
+  if (L.has(Effect::GpsLatency)) latency_s_ += dx(L.of(Effect::GpsLatency).start);
+  dx.setZero();
+}
+
+BodyRates ErrorStateFilter::compensate(const ImuSample& raw) const {
+  const double dT = raw.has_temp ? raw.temp_degC - temp_ref_degC_ : 0.0;
+  Eigen::Vector3d ba, bg;
+  for (Eigen::Index i = 0; i < 3; ++i) {
+    ba(i) = sensor_hat_(hat_index(sensor_axis::kFirstAccel + i)) + accel_bias_(i);
+    bg(i) = sensor_hat_(hat_index(sensor_axis::kFirstGyro + i)) + gyro_bias_(i);
+  }
+  BodyRates out;
+  out.specific_force_b_m_s2 =
+      (Eigen::Vector3d::Ones() - accel_scale_).cwiseProduct(raw.specific_force_b_m_s2 - ba - accel_temp_ * dT);
+  out.angular_rate_b_rad_s = (Eigen::Vector3d::Ones() - gyro_scale_)
+                                 .cwiseProduct(raw.angular_rate_b_rad_s - bg - gyro_temp_ * dT);
+  return out;
+}
+
+double ErrorStateFilter::sensor_error(Eigen::Index axis) const { return sensor_hat_(hat_index(axis)); }
+
+void ErrorStateFilter::seed_gyro_bias(const Eigen::Vector3d& bias, double sigma) {
+  if (layout_.has(Effect::GyroBias)) {
+    gyro_bias_ = bias;
+    const Eigen::Index s = layout_.of(Effect::GyroBias).start;
+    for (Eigen::Index i = 0; i < 3; ++i) P_(s + i, s + i) = std::min(P_(s + i, s + i), sigma * sigma);
+    return;
+  }
+  const Eigen::Index p = layout_.order;
+  for (Eigen::Index i = 0; i < 3; ++i) {
+    const Eigen::Index axis = sensor_axis::kFirstGyro + i;
+    sensor_hat_.segment(hat_index(axis), p).setConstant(bias(i));
+    const Eigen::Index s = layout_.sensor_state(axis);
+    // Keep the block's correlation structure, shrink it to the measured uncertainty.
+    const double scale = P_(s, s) > 0.0 ? std::min(1.0, sigma * sigma / P_(s, s)) : 0.0;
+    P_.block(s, 0, p, P_.cols()) *= std::sqrt(scale);
+    P_.block(0, s, P_.rows(), p) *= std::sqrt(scale);
+  }
+}
+
+double ErrorStateFilter::sensor_error_sigma(Eigen::Index axis) const {
+  const Eigen::Index s = layout_.sensor_state(axis);
+  return std::sqrt(P_(s, s));
+}
+
+double ErrorStateFilter::effect(Effect e, Eigen::Index i) const {
+  switch (e) {
+    case Effect::AccelScale: return accel_scale_(i);
+    case Effect::GyroScale: return gyro_scale_(i);
+    case Effect::LeverArm: return lever_arm_b_(i);
+    case Effect::GpsLatency: return latency_s_;
+    case Effect::AccelTempBias: return accel_temp_(i);
+    case Effect::GyroTempBias: return gyro_temp_(i);
+    case Effect::AccelBias: return accel_bias_(i);
+    case Effect::GyroBias: return gyro_bias_(i);
+  }
+  return 0.0;
+}
+
+double ErrorStateFilter::effect_sigma(Effect e, Eigen::Index i) const {
+  if (!layout_.has(e)) return 0.0;
+  const Eigen::Index s = layout_.of(e).start + i;
+  return std::sqrt(P_(s, s));
+}
+
+}  // namespace sinu::est

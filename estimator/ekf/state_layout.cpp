@@ -1,0 +1,37 @@
+#include "estimator/ekf/state_layout.hpp"
+
+#include <cstring>
+
+namespace sinu::est {
+
+bool effect_from_name(const char* name, std::size_t length, Effect& out) {
+  for (std::size_t i = 0; i < kEffectCount; ++i) {
+    if (std::strlen(kEffectNames[i]) == length && std::strncmp(kEffectNames[i], name, length) == 0) {
+      out = static_cast<Effect>(i);
+      return true;
+    }
+  }
+  return false;
+}
+
+StateLayout StateLayout::make(Eigen::Index order, EffectSet effects) {
+  StateLayout l;
+  l.order = order < 1 ? 1 : (order > kMaxArOrder ? kMaxArOrder : order);
+  Eigen::Index next = 0;
+  auto take = [&next](Eigen::Index n) {
+    const Slice s{next, n};
+    next += n;
+    return s;
+  };
+  l.pos = take(3);
+  l.vel = take(3);
+  l.att = take(3);
+  l.sensor = take(kSensorAxes * l.order);
+  for (std::size_t i = 0; i < kEffectCount; ++i) {
+    if (effects.has(static_cast<Effect>(i))) l.effect[i] = take(kEffectDims[i]);
+  }
+  l.dim = next;
+  return l;
+}
+
+}  // namespace sinu::est

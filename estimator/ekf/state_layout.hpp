@@ -1,0 +1,80 @@
+#pragma once
+// The error-state vector: navigation errors, sensor-error states, optional
+// effect states. The maximum dimension is fixed at compile time; the active
+// layout (model order, chosen effects) is built at run time. Every block is a
+// named Slice: code indexes P through slices, never by bare numbers.
+//
+// Sign conventions (all blocks are "x_hat - x" except the sensor part):
+//   pos  d_p  NED metres of (computed - true) position
+//   vel  d_v  computed - true NED velocity [m/s]
+//   att  phi  C_nb_hat = (I - [phi x]) C_nb  [rad]
+//   sensor states, scale, temperature coefficients, lever arm, latency:
+//        true - estimated (feedback adds them to the estimate)
+#include <array>
+#include <cstdint>
+#include <Eigen/Core>
+
+namespace sinu::est {
+
+inline constexpr Eigen::Index kNavStates = 9;
+inline constexpr Eigen::Index kMaxArOrder = 4;
+inline constexpr Eigen::Index kSensorAxes = 6;  // ax ay az gx gy gz
+
+namespace sensor_axis {
+enum : Eigen::Index { ax, ay, az, gx, gy, gz };
+inline constexpr Eigen::Index kFirstAccel = ax;
+inline constexpr Eigen::Index kFirstGyro = gx;
+}  // namespace sensor_axis
+
+/// Optional effect states, named as in the project's effect vocabulary.
+/// accel_bias / gyro_bias are random-constant (turn-on) biases: calib.json's
+/// GM/AR models describe the zero-mean part of the error of a static session,
+/// so a unit's per-power-on bias needs its own states.
+enum class Effect : std::uint8_t {
+  AccelScale, GyroScale, LeverArm, GpsLatency, AccelTempBias, GyroTempBias, AccelBias, GyroBias
+};
+inline constexpr std::size_t kEffectCount = 8;
+inline constexpr std::array<const char*, kEffectCount> kEffectNames = {
+    "accel_scale", "gyro_scale", "lever_arm", "gps_latency", "accel_temp_bias", "gyro_temp_bias",
+    "accel_bias", "gyro_bias"};
+inline constexpr std::array<Eigen::Index, kEffectCount> kEffectDims = {3, 3, 3, 1, 3, 3, 3, 3};
+inline constexpr Eigen::Index kMaxEffectStates = 22;
+
+inline constexpr Eigen::Index kMaxStates = kNavStates + kSensorAxes * kMaxArOrder + kMaxEffectStates;
+
+using StateVec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxStates, 1>;
+using StateMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxStates, kMaxStates>;
+
+struct Slice {
+  Eigen::Index start = 0;
+  Eigen::Index size = 0;
+  bool active() const { return size > 0; }
+};
+
+/// A set of effects (bit i = Effect i).
+struct EffectSet {
+  std::uint32_t bits = 0;
+  bool has(Effect e) const { return (bits >> static_cast<unsigned>(e)) & 1u; }
+  void add(Effect e) { bits |= 1u << static_cast<unsigned>(e); }
+};
+
+/// Looks an effect up by its vocabulary name; false if unknown.
+bool effect_from_name(const char* name, std::size_t length, Effect& out);
+
+struct StateLayout {
+  Slice pos, vel, att;
+  Slice sensor;              // kSensorAxes blocks of `order` states each
+  Eigen::Index order = 1;    // states per sensor axis: 1 (GM) or p (AR(p))
+  std::array<Slice, kEffectCount> effect{};
+  Eigen::Index dim = 0;
+
+  /// First state of a sensor axis block: the axis's current error.
+  Eigen::Index sensor_state(Eigen::Index axis) const { return sensor.start + axis * order; }
+  const Slice& of(Effect e) const { return effect[static_cast<std::size_t>(e)]; }
+  bool has(Effect e) const { return of(e).active(); }
+
+  /// order in 1..kMaxArOrder.
+  static StateLayout make(Eigen::Index order, EffectSet effects);
+};
+
+}  // namespace sinu::est

@@ -1,0 +1,16 @@
+#pragma once
+// One IMU sample at instant t: the sensor output at that instant (dataset
+// contract: not an increment). Body frame FRD.
+#include <Eigen/Core>
+
+namespace sinu::est {
+
+struct ImuSample {
+  double t_s = 0.0;
+  Eigen::Vector3d specific_force_b_m_s2 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d angular_rate_b_rad_s = Eigen::Vector3d::Zero();
+  double temp_degC = 0.0;
+  bool has_temp = false;
+};
+
+}  // namespace sinu::est

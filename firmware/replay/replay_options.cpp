@@ -1,0 +1,72 @@
+#include "firmware/replay/replay_options.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace sinu::replay {
+
+namespace {
+// Effects of the shared vocabulary that the EKF does not model yet.
+constexpr const char* kVocabularyNotModelled[] = {"accel_misalign", "gyro_misalign", "mag_hard_iron", "mag_soft_iron",
+                                                  "gyro_g_sensitivity"};
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= s.size()) {
+    const std::size_t end = s.find(sep, start);
+    out.push_back(s.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return out;
+}
+
+bool to_number(const std::string& s, double& v) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  v = std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size() && std::isfinite(v);
+}
+}  // namespace
+
+bool parse_outages(const std::string& text, std::vector<Outage>& out, std::string& error) {
+  out.clear();
+  if (text.empty()) return true;
+  for (const std::string& item : split(text, ',')) {
+    const std::size_t colon = item.find(':');
+    Outage o;
+    if (colon == std::string::npos || !to_number(item.substr(0, colon), o.start_s) ||
+        !to_number(item.substr(colon + 1), o.duration_s) || !(o.duration_s > 0.0)) {
+      error = "--outage: '" + item + "' is not START:DURATION with DURATION > 0 (seconds)";
+      return false;
+    }
+    out.push_back(o);
+  }
+  return true;
+}
+
+bool parse_effects(const std::string& text, est::EffectSet& out, std::string& error) {
+  out = {};
+  if (text.empty()) return true;
+  for (const std::string& name : split(text, ',')) {
+    est::Effect e;
+    if (est::effect_from_name(name.c_str(), name.size(), e)) {
+      out.add(e);
+      continue;
+    }
+    for (const char* v : kVocabularyNotModelled) {
+      if (name == v) {
+        error = "--effects: '" + name + "' is in the effect vocabulary but the EKF does not model it yet";
+        return false;
+      }
+    }
+    std::string list;
+    for (const char* n : est::kEffectNames) list += std::string(list.empty() ? "" : ", ") + n;
+    error = "--effects: unknown effect '" + name + "' (modelled: " + list + ")";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace sinu::replay

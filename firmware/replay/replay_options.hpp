@@ -1,0 +1,38 @@
+#pragma once
+// Everything `sinu replay` needs, parsed and validated by the CLI.
+#include <string>
+#include <vector>
+
+#include "estimator/nav/navigator.hpp"
+#include "firmware/replay/calib_json.hpp"
+#include "firmware/replay/gnss_from_fix.hpp"
+
+namespace sinu::replay {
+
+struct Outage {
+  double start_s = 0.0;     // dataset time t
+  double duration_s = 0.0;
+};
+
+struct ReplayOptions {
+  std::string in_dir;
+  std::string calib_path;   // empty: documented defaults (SensorNoise::defaults)
+  std::string out_dir;
+  CalibChoice calib;
+  est::EffectSet effects;
+  double gps_period_s = 0.0;  // 0: every epoch
+  std::vector<Outage> outages;
+  double gps_latency_s = 0.0;
+  Eigen::Vector3d lever_arm_b_m = Eigen::Vector3d::Zero();
+  double nav_rate_hz = 10.0;  // nav.csv rows per second; 0: every IMU sample
+  double gate_sigma = 5.0;
+  GnssSigmaConfig sigma;
+  bool quiet = false;
+};
+
+/// Parses "START:DURATION,START:DURATION"; false with `error` on bad input.
+bool parse_outages(const std::string& text, std::vector<Outage>& out, std::string& error);
+/// Parses "accel_scale,lever_arm"; false with `error` naming the bad effect.
+bool parse_effects(const std::string& text, est::EffectSet& out, std::string& error);
+
+}  // namespace sinu::replay

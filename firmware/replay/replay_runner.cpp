@@ -1,0 +1,376 @@
+#include "firmware/replay/replay_runner.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "estimator/ins/rotation.hpp"
+#include "firmware/dataset/dataset_paths.hpp"
+#include "firmware/dataset/imu_csv.hpp"
+#include "firmware/dataset/nmea_log.hpp"
+#include "firmware/dataset/truth_csv.hpp"
+#include "firmware/replay/nav_metrics.hpp"
+#include "firmware/replay/text_sink.hpp"
+
+namespace sinu::replay {
+
+namespace {
+
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+
+bool truth_point(const io::CsvRow& r, TruthPoint& p) {
+  using namespace io::truth_col;
+  if (!r.has(lat) || !r.has(lon) || !r.has(h)) return false;
+  p.t_s = r.t();
+  p.lat_rad = r.value[lat] * kDegToRad;
+  p.lon_rad = r.value[lon] * kDegToRad;
+  p.h_m = r.value[h];
+  p.has_vel = r.has(vn) && r.has(ve) && r.has(vd);
+  if (p.has_vel) p.v_n = {r.value[vn], r.value[ve], r.value[vd]};
+  p.has_att = r.has(roll) && r.has(pitch) && r.has(yaw);
+  if (p.has_att) p.q_nb = est::quat_from_euler(r.value[roll] * kDegToRad, r.value[pitch] * kDegToRad, r.value[yaw] * kDegToRad);
+  return true;
+}
+
+/// Writes nav.csv / innovations.csv rows and feeds the truth comparison.
+class ReplayObserver final : public est::NavObserver {
+ public:
+  ReplayObserver(const est::Navigator& nav, NavMetrics& metrics, TextSink& nav_out, TextSink& innov_out,
+                 io::CsvReader* truth, double nav_period_s)
+      : nav_(nav), metrics_(metrics), nav_out_(nav_out), innov_out_(innov_out), truth_(truth), period_(nav_period_s) {
+    advance_truth();
+  }
+
+  void on_nav(const est::NavOutput& o) override {
+    if (std::isnan(first_t_)) first_t_ = o.nav.t_s;
+    compare_with_truth(o);
+    prev_ = o;
+    have_prev_ = true;
+    if (o.nav.t_s + 1e-9 >= next_write_t_) {
+      write_nav(o);
+      next_write_t_ = period_ > 0.0 ? std::floor(o.nav.t_s / period_ + 1.0 + 1e-9) * period_ : o.nav.t_s;
+    }
+  }
+
+  void on_innovation(const est::InnovationRecord& rec) override {
+    metrics_.add_innovation(rec);
+    static constexpr const char* kComponents[2][3] = {{"north", "east", "down"}, {"north", "east", ""}};
+    const auto src = static_cast<std::size_t>(rec.source);
+    for (Eigen::Index i = 0; i < rec.result.rows; ++i) {
+      innov_out_.number(rec.t_s, 6);
+      innov_out_.comma();
+      innov_out_.text(est::kAidingSourceNames[src]);
+      innov_out_.comma();
+      innov_out_.text(kComponents[src][i]);
+      innov_out_.comma();
+      innov_out_.number(rec.result.innovation(i), 4);
+      innov_out_.comma();
+      innov_out_.number(rec.result.innovation_sigma(i), 4);
+      innov_out_.comma();
+      innov_out_.number(rec.result.test_ratio(i), 4);
+      innov_out_.comma();
+      innov_out_.text(rec.result.accepted ? "1" : "0");
+      innov_out_.end_row();
+    }
+  }
+
+  double first_t() const { return first_t_; }
+
+ private:
+  void advance_truth() {
+    have_truth_ = false;
+    if (!truth_) return;
+    while (truth_->next(row_) == io::ReadStatus::Row) {
+      if (truth_point(row_, truth_pt_)) {
+        have_truth_ = true;
+        return;
+      }
+    }
+  }
+
+  void compare_with_truth(const est::NavOutput& o) {
+    while (have_truth_ && truth_pt_.t_s <= o.nav.t_s) {
+      if (have_prev_ && truth_pt_.t_s >= prev_.nav.t_s) {
+        const double span = o.nav.t_s - prev_.nav.t_s;
+        const double a = span > 0.0 ? (truth_pt_.t_s - prev_.nav.t_s) / span : 1.0;
+        est::NavState s = o.nav;
+        s.lat_rad = prev_.nav.lat_rad + a * (o.nav.lat_rad - prev_.nav.lat_rad);
+        s.lon_rad = prev_.nav.lon_rad + a * (o.nav.lon_rad - prev_.nav.lon_rad);
+        s.h_m = prev_.nav.h_m + a * (o.nav.h_m - prev_.nav.h_m);
+        s.v_n_m_s = prev_.nav.v_n_m_s + a * (o.nav.v_n_m_s - prev_.nav.v_n_m_s);
+        s.q_nb = prev_.nav.q_nb.slerp(a, o.nav.q_nb);
+        metrics_.add_truth(truth_pt_, s, o.P_nav);
+      }
+      advance_truth();
+    }
+  }
+
+  void write_nav(const est::NavOutput& o) {
+    const Eigen::Vector3d eul = est::euler_from_quat(o.nav.q_nb) * kRadToDeg;
+    TextSink& w = nav_out_;
+    w.number(o.nav.t_s, 6);
+    w.comma();
+    w.number(o.nav.lat_rad * kRadToDeg, 9);
+    w.comma();
+    w.number(o.nav.lon_rad * kRadToDeg, 9);
+    w.comma();
+    w.number(o.nav.h_m, 4);
+    for (Eigen::Index i = 0; i < 3; ++i) {
+      w.comma();
+      w.number(o.nav.v_n_m_s(i), 4);
+    }
+    for (Eigen::Index i = 0; i < 3; ++i) {
+      w.comma();
+      w.number(eul(i), 6);
+    }
+    for (Eigen::Index i = 0; i < 9; ++i) {
+      w.comma();
+      w.number(std::sqrt(o.P_nav(i, i)) * (i >= 6 ? kRadToDeg : 1.0), 6);
+    }
+    for (std::size_t a = 0; a < est::kSensorAxes; ++a) {
+      w.comma();
+      w.number(o.sensor_error[a], 9);
+    }
+    for (std::size_t a = 0; a < est::kSensorAxes; ++a) {
+      w.comma();
+      w.number(o.sensor_error_sigma[a], 9);
+    }
+    const est::ErrorStateFilter& f = nav_.filter();
+    for (std::size_t e = 0; e < est::kEffectCount; ++e) {
+      const auto eff = static_cast<est::Effect>(e);
+      if (!f.layout().has(eff)) continue;
+      for (Eigen::Index i = 0; i < est::kEffectDims[e]; ++i) {
+        w.comma();
+        w.number(f.effect(eff, i), 9);
+        w.comma();
+        w.number(f.effect_sigma(eff, i), 9);
+      }
+    }
+    w.end_row();
+  }
+
+  const est::Navigator& nav_;
+  NavMetrics& metrics_;
+  TextSink& nav_out_;
+  TextSink& innov_out_;
+  io::CsvReader* truth_;
+  double period_;
+  io::CsvRow row_;
+  TruthPoint truth_pt_;
+  bool have_truth_ = false;
+  est::NavOutput prev_;
+  bool have_prev_ = false;
+  double next_write_t_ = -1e300;
+  double first_t_ = NAN;
+};
+
+std::string nav_header(const est::StateLayout& layout) {
+  std::string h = "t,lat,lon,h,vn,ve,vd,roll,pitch,yaw,sigma_pn_m,sigma_pe_m,sigma_pd_m,sigma_vn,sigma_ve,sigma_vd,"
+                  "sigma_att_n_deg,sigma_att_e_deg,sigma_att_d_deg,"
+                  "err_ax,err_ay,err_az,err_gx,err_gy,err_gz,sigma_err_ax,sigma_err_ay,sigma_err_az,sigma_err_gx,"
+                  "sigma_err_gy,sigma_err_gz";
+  static constexpr const char* kAxis[] = {"x", "y", "z"};
+  for (std::size_t e = 0; e < est::kEffectCount; ++e) {
+    if (!layout.has(static_cast<est::Effect>(e))) continue;
+    for (Eigen::Index i = 0; i < est::kEffectDims[e]; ++i) {
+      const std::string name = std::string(est::kEffectNames[e]) + (est::kEffectDims[e] > 1 ? std::string("_") + kAxis[i] : "");
+      h += "," + name + ",sigma_" + name;
+    }
+  }
+  return h + "\n";
+}
+
+}  // namespace
+
+bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& error) {
+  const io::DatasetPaths paths{opt.in_dir};
+  est::NavigatorConfig cfg;
+  cfg.noise = est::SensorNoise::defaults(opt.calib.kind);
+  if (!opt.calib_path.empty() && !load_calib(opt.calib_path, opt.calib, cfg.noise, error)) return false;
+  cfg.effects = opt.effects;
+  cfg.gate_sigma = opt.gate_sigma;
+  cfg.gps_latency_s = opt.gps_latency_s;
+  cfg.lever_arm_b_m = opt.lever_arm_b_m;
+  cfg.horizon_s = std::max(0.3, opt.gps_latency_s + 0.25);
+
+  io::CsvReader imu(io::kImuSchema);
+  if (!imu.open(paths.imu())) {
+    error = imu.error().to_string();
+    return false;
+  }
+  io::GpsLogReader gps;
+  const bool has_gps = paths.has_gps();
+  if (has_gps && !gps.open(paths.gps())) {
+    error = gps.error().to_string();
+    return false;
+  }
+  io::CsvReader truth(io::kTruthSchema);
+  const bool has_truth = paths.has_truth();
+  if (has_truth && !truth.open(paths.truth())) {
+    error = truth.error().to_string();
+    return false;
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(opt.out_dir, ec);
+  const std::filesystem::path out(opt.out_dir);
+  TextSink nav_out, innov_out;
+  if (!nav_out.open((out / "nav.csv").string()) || !innov_out.open((out / "innovations.csv").string())) {
+    error = opt.out_dir + ": cannot create nav.csv / innovations.csv";
+    return false;
+  }
+
+  auto navigator = std::make_unique<est::Navigator>();
+  NavMetrics metrics;
+  metrics.init(opt.outages);
+  ReplayObserver observer(*navigator, metrics, nav_out, innov_out, has_truth ? &truth : nullptr,
+                          opt.nav_rate_hz > 0.0 ? 1.0 / opt.nav_rate_hz : 0.0);
+  navigator->init(cfg, &observer, nullptr);
+  nav_out.text(nav_header(navigator->filter().layout()));
+  innov_out.text("t,source,component,innovation,sigma,test_ratio,accepted\n");
+
+  std::uint64_t epochs = 0, used = 0, dropped_outage = 0, dropped_period = 0, imu_incomplete = 0;
+  double last_used_t = -1e300;
+  drivers::GpsFix fix;
+  bool fix_pending = has_gps && gps.next(fix) == io::ReadStatus::Row;
+  auto push_fix = [&](const drivers::GpsFix& f) {
+    ++epochs;
+    est::GnssObservation z;
+    if (!gnss_from_fix(f, opt.sigma, z)) return;
+    const double t_valid = z.arrival_s - opt.gps_latency_s;
+    for (const Outage& o : opt.outages) {
+      if (t_valid >= o.start_s && t_valid < o.start_s + o.duration_s) {
+        ++dropped_outage;
+        return;
+      }
+    }
+    // Slower GPS: keep an epoch once at least a period (less 0.05 s of arrival jitter) has passed.
+    if (opt.gps_period_s > 0.0 && t_valid - last_used_t < opt.gps_period_s - 0.05) {
+      ++dropped_period;
+      return;
+    }
+    last_used_t = t_valid;
+    ++used;
+    navigator->push_gnss(z);
+  };
+
+  io::CsvRow row;
+  io::ReadStatus st;
+  double t_first = NAN, t_last = NAN;
+  while ((st = imu.next(row)) == io::ReadStatus::Row) {
+    const io::ImuRow r{row};
+    if (!r.has_accel() || !r.has_gyro()) {
+      ++imu_incomplete;
+      continue;
+    }
+    est::ImuSample s;
+    s.t_s = r.t_s();
+    const auto f = r.specific_force_b_m_s2();
+    const auto g = r.angular_rate_b_rad_s();
+    s.specific_force_b_m_s2 = {f[0], f[1], f[2]};
+    s.angular_rate_b_rad_s = {g[0], g[1], g[2]};
+    s.has_temp = r.has_temp();
+    s.temp_degC = s.has_temp ? r.temp_degC() : 0.0;
+    while (fix_pending && fix.arrival_s <= s.t_s) {
+      push_fix(fix);
+      fix_pending = gps.next(fix) == io::ReadStatus::Row;
+    }
+    navigator->push_imu(s);
+    if (std::isnan(t_first)) t_first = s.t_s;
+    t_last = s.t_s;
+    ++totals.imu_samples;
+  }
+  if (st == io::ReadStatus::Error) {
+    error = imu.error().to_string();
+    return false;
+  }
+  navigator->flush();
+  if (has_truth && truth.error().message.size()) {
+    error = truth.error().to_string();
+    return false;
+  }
+
+  // summary.json (end of run: allocation here does not grow with the flight).
+  using nlohmann::json;
+  const auto& c = navigator->counters();
+  const est::ErrorStateFilter& flt = navigator->filter();
+  json sj;
+  sj["dataset"] = opt.in_dir;
+  sj["model"] = opt.calib.kind == est::NoiseModelKind::GaussMarkov ? "gm" : "ar";
+  if (opt.calib.kind == est::NoiseModelKind::AutoRegressive) sj["ar"] = {{"method", opt.calib.ar_method}, {"order", opt.calib.ar_order}};
+  sj["calib"] = opt.calib_path.empty() ? json(nullptr) : json(opt.calib_path);
+  sj["states"] = flt.layout().dim;
+  json eff = json::array();
+  for (std::size_t e = 0; e < est::kEffectCount; ++e) {
+    const auto ef = static_cast<est::Effect>(e);
+    if (!flt.layout().has(ef)) continue;
+    json vals = json::array(), sig = json::array();
+    for (Eigen::Index i = 0; i < est::kEffectDims[e]; ++i) {
+      vals.push_back(flt.effect(ef, i));
+      sig.push_back(flt.effect_sigma(ef, i));
+    }
+    eff.push_back({{"name", est::kEffectNames[e]}, {"estimate", vals}, {"sigma", sig}});
+  }
+  sj["effects"] = eff;
+  sj["imu_samples"] = totals.imu_samples;
+  sj["duration_s"] = std::isnan(t_first) ? 0.0 : t_last - t_first;
+  sj["aligned"] = navigator->aligned();
+  sj["aligned_at_s"] = std::isnan(observer.first_t()) ? json(nullptr) : json(observer.first_t());
+  const auto rms = [](double sum, std::uint64_t n) { return n ? json(std::sqrt(sum / static_cast<double>(n))) : json(nullptr); };
+  sj["rmse"] = {{"pos_h_m", rms(metrics.sum_h2, metrics.compared)},
+                {"pos_v_m", rms(metrics.sum_v2, metrics.compared)},
+                {"vel_m_s", rms(metrics.sum_vel2, metrics.compared_vel)},
+                {"att_deg", metrics.compared_att ? json(std::sqrt(metrics.sum_att2 / static_cast<double>(metrics.compared_att)) * kRadToDeg) : json(nullptr)},
+                {"truth_points", metrics.compared}};
+  json outs = json::array();
+  double drift2 = 0.0;
+  std::size_t scored = 0;  // outages with a solution and truth inside them
+  for (const OutageDrift& o : metrics.outages) {
+    outs.push_back({{"start", o.window.start_s}, {"duration", o.window.duration_s},
+                    {"max_drift_h_m", o.points ? json(o.max_drift_h_m) : json(nullptr)}});
+    if (o.points == 0) continue;
+    drift2 += o.max_drift_h_m * o.max_drift_h_m;
+    ++scored;
+  }
+  sj["outages"] = outs;
+  sj["outage_max_drift_h_rms_m"] = scored ? json(std::sqrt(drift2 / static_cast<double>(scored))) : json(nullptr);
+  json nis;
+  for (std::size_t i = 0; i < est::kAidingSourceCount; ++i) {
+    const ChiStats& s = metrics.nis[i];
+    nis[est::kAidingSourceNames[i]] = {{"count", s.count}, {"mean", s.mean()}, {"inside_95", s.inside_fraction()}};
+  }
+  sj["nis"] = nis;
+  sj["nees"] = {{"dof", metrics.nees_dof}, {"count", metrics.nees.count}, {"mean", metrics.nees.mean()},
+                {"inside_95", metrics.nees.inside_fraction()}};
+  sj["rejected"] = {{"gnss_position", c.rejected[0]}, {"gnss_velocity", c.rejected[1]}};
+  sj["accepted"] = {{"gnss_position", c.accepted[0]}, {"gnss_velocity", c.accepted[1]}};
+  sj["gnss"] = {{"epochs", epochs}, {"used", used}, {"dropped_outage", dropped_outage}, {"dropped_period", dropped_period},
+                {"late", c.gnss_late}, {"overflow", c.gnss_overflow}, {"resets", c.gnss_resets}};
+  sj["corrupt_sentences"] = has_gps ? gps.corrupt() : 0;
+  sj["imu"] = {{"incomplete_rows", imu_incomplete}, {"non_increasing", c.imu_non_increasing}, {"gaps", c.imu_gaps},
+               {"invalid", c.imu_invalid}};
+  json sens = json::object();
+  static constexpr const char* kAxes[] = {"ax", "ay", "az", "gx", "gy", "gz"};
+  for (Eigen::Index a = 0; a < est::kSensorAxes; ++a) {
+    sens[kAxes[a]] = {{"estimate", flt.sensor_error(a)}, {"sigma", flt.sensor_error_sigma(a)}};
+  }
+  sj["sensor_errors_final"] = sens;
+
+  if (!nav_out.close() || !innov_out.close()) {
+    error = opt.out_dir + ": writing nav.csv / innovations.csv failed (disk full?)";
+    return false;
+  }
+  std::ofstream so(out / "summary.json");
+  so << sj.dump(2) << "\n";
+  if (!so) {
+    error = opt.out_dir + "/summary.json: write failed";
+    return false;
+  }
+  totals.aligned = navigator->aligned();
+  totals.rmse_pos_h_m = metrics.compared ? std::sqrt(metrics.sum_h2 / static_cast<double>(metrics.compared)) : NAN;
+  return true;
+}
+
+}  // namespace sinu::replay

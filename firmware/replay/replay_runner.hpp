@@ -1,0 +1,21 @@
+#pragma once
+// `sinu replay`: a dataset folder through the Navigator, writing nav.csv,
+// innovations.csv and summary.json into the output folder.
+#include <string>
+
+#include "firmware/replay/replay_options.hpp"
+
+namespace sinu::replay {
+
+struct ReplayTotals {
+  std::uint64_t imu_samples = 0;
+  double rmse_pos_h_m = 0.0;
+  bool aligned = false;
+};
+
+/// Returns true on success; false with a one-line `error` (file:line:column
+/// where a file is at fault). Allocates a bounded number of times, independent
+/// of the dataset's length.
+bool run_replay(const ReplayOptions& options, ReplayTotals& totals, std::string& error);
+
+}  // namespace sinu::replay

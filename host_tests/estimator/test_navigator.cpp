@@ -1,0 +1,162 @@
+// The whole navigation unit (alignment, INS, EKF, GNSS fusion) on analytic flights.
+#include <gtest/gtest.h>
+
+#include <Eigen/Cholesky>
+#include <numbers>
+#include <random>
+
+#include "host_tests/estimator/navigator_run.hpp"
+
+namespace sinu::test {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+
+std::vector<est::ImuSample> imu_of(const std::vector<TruthSample>& truth) {
+  std::vector<est::ImuSample> imu;
+  imu.reserve(truth.size());
+  for (const auto& s : truth) imu.push_back(s.imu);
+  return imu;
+}
+
+TEST(Navigator, PerfectImuAndGpsThirtyMinuteFlight) {
+  const auto truth = AnalyticFlight(FlightProfile{}).sample(40.0, 1860.0);
+  const auto gnss = AnalyticFlight::gnss(truth, 8, 0.05, Eigen::Vector3d::Zero(), 0.5, 0.1);
+  est::NavigatorConfig cfg;
+  cfg.gps_latency_s = 0.05;
+  RunStats stats;
+  TruthComparer cmp(truth, 40.0, stats);
+  est::Navigator nav;
+  nav.init(cfg, &cmp, nullptr);
+  feed(nav, imu_of(truth), gnss);
+  ASSERT_TRUE(nav.aligned());
+  // Alignment completes during the run-up (course at 3 m/s); the 30 minutes
+  // of flight are scored from 60 s after it (heading converges on the first turns).
+  const double from = stats.align_t + 60.0;
+  const double pos_rms = std::hypot(rms_after(stats.t, stats.pos_err_h, from), rms_after(stats.t, stats.pos_err_v, from));
+  const double att_rms_deg = rms_after(stats.t, stats.att_err, from) * kRadToDeg;
+  std::printf("aligned at +%.1f s; position RMS %.4f m, attitude RMS %.5f deg, rejected %zu\n",
+              stats.align_t - truth.front().nav.t_s, pos_rms, att_rms_deg, stats.rejected);
+  // The requirement: under 0.5 m and 0.05 deg.
+  EXPECT_LT(pos_rms, 0.5);
+  EXPECT_LT(att_rms_deg, 0.05);
+  EXPECT_EQ(stats.rejected, 0u);
+}
+
+TEST(Navigator, CovarianceStaysExactlySymmetricAndPositiveDefinite) {
+  const auto truth = AnalyticFlight(FlightProfile{}).sample(40.0, 400.0);
+  const auto gnss = AnalyticFlight::gnss(truth, 8, 0.0, Eigen::Vector3d::Zero(), 0.5, 0.1);
+  for (const auto kind : {est::NoiseModelKind::GaussMarkov, est::NoiseModelKind::AutoRegressive}) {
+    est::NavigatorConfig cfg;
+    cfg.noise = est::SensorNoise::defaults(kind);
+    for (std::size_t e = 0; e < est::kEffectCount; ++e) cfg.effects.add(static_cast<est::Effect>(e));
+    est::Navigator nav;
+    nav.init(cfg, nullptr, nullptr);
+    feed(nav, imu_of(truth), gnss);
+    const est::StateMat& P = nav.filter().P();
+    EXPECT_EQ(nav.counters().rejected[0] + nav.counters().rejected[1], 0u);
+    EXPECT_GT(nav.counters().accepted[0], gnss.size() * 8 / 10) << "all epochs after alignment fused";
+    EXPECT_TRUE((P - P.transpose()).cwiseAbs().maxCoeff() == 0.0) << "P must be exactly symmetric";
+    Eigen::LLT<est::StateMat> llt(P);
+    EXPECT_EQ(llt.info(), Eigen::Success) << "P must be positive definite";
+  }
+}
+
+TEST(Navigator, GateRejectsAnOutlierAndCountsIt) {
+  const auto truth = AnalyticFlight(FlightProfile{}).sample(40.0, 300.0);
+  auto gnss = AnalyticFlight::gnss(truth, 8, 0.0, Eigen::Vector3d::Zero(), 0.5, 0.1);
+  const std::size_t bad = gnss.size() - 100;
+  gnss[bad].lat_rad += 50.0 / 6.37e6;  // 50 m north: 100 sigma
+  const double t_bad = gnss[bad].arrival_s;
+  est::NavigatorConfig cfg;
+  RunStats stats;
+  TruthComparer cmp(truth, 40.0, stats);
+  est::Navigator nav;
+  nav.init(cfg, &cmp, nullptr);
+  feed(nav, imu_of(truth), gnss);
+  EXPECT_EQ(nav.counters().rejected[static_cast<std::size_t>(est::AidingSource::GnssPosition)], 1u);
+  // The solution right after the outlier is unaffected (below 0.5 m, where
+  // a fused 50 m jump would have moved it by metres).
+  for (std::size_t i = 0; i < stats.t.size(); ++i) {
+    if (stats.t[i] >= t_bad && stats.t[i] < t_bad + 1.0) {
+      EXPECT_LT(stats.pos_err_h[i], 0.5);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sinu::test
+
+namespace sinu::test {
+namespace {
+
+// Chi-square 2.5% and 97.5% quantiles (scipy.stats.chi2.ppf) for 3 and 9 dof.
+constexpr double kChi2Lo3 = 0.2158, kChi2Hi3 = 9.3484;
+constexpr double kChi2Lo9 = 2.7004, kChi2Hi9 = 19.0228;
+
+double fraction_inside(const std::vector<double>& x, const std::vector<double>* t, double t_from, double lo, double hi) {
+  std::size_t n = 0, in = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (t && (*t)[i] < t_from) continue;
+    ++n;
+    if (x[i] >= lo && x[i] <= hi) ++in;
+  }
+  return n ? static_cast<double>(in) / static_cast<double>(n) : 0.0;
+}
+
+// Sensors drawn from exactly the filter's default model: GM bias (stationary
+// start) plus white noise per axis; GNSS white noise at its declared sigma.
+TEST(Navigator, NeesAndNisInsideTheirChiSquareBoundsWithAMatchedModel) {
+  constexpr double kRate = 40.0;
+  auto truth = AnalyticFlight(FlightProfile{}).sample(kRate, 1200.0);
+  const est::SensorNoise model = est::SensorNoise::defaults(est::NoiseModelKind::GaussMarkov);
+  std::mt19937_64 rng(42);
+  std::normal_distribution<double> n01;
+  std::array<double, 6> bias{};
+  for (std::size_t a = 0; a < 6; ++a) bias[a] = std::sqrt(model.gm[a].variance) * n01(rng);
+  std::vector<est::ImuSample> imu;
+  imu.reserve(truth.size());
+  const double dt = 1.0 / kRate;
+  for (const auto& s : truth) {
+    est::ImuSample m = s.imu;
+    for (Eigen::Index i = 0; i < 3; ++i) {
+      const auto ka = static_cast<std::size_t>(i), kg = static_cast<std::size_t>(i + 3);
+      m.specific_force_b_m_s2(i) += bias[ka] + model.accel_white_m_s2_rthz * std::sqrt(kRate) * n01(rng);
+      m.angular_rate_b_rad_s(i) += bias[kg] + model.gyro_white_rad_s_rthz * std::sqrt(kRate) * n01(rng);
+    }
+    for (std::size_t a = 0; a < 6; ++a) {
+      const double phi = std::exp(-dt / model.gm[a].tau_s);
+      bias[a] = phi * bias[a] + std::sqrt(model.gm[a].variance * (1.0 - phi * phi)) * n01(rng);
+    }
+    imu.push_back(m);
+  }
+  constexpr double kSigP = 0.5, kSigV = 0.1;
+  auto gnss = AnalyticFlight::gnss(truth, 8, 0.0, Eigen::Vector3d::Zero(), kSigP, kSigV);
+  for (auto& z : gnss) {
+    z.lat_rad += kSigP * n01(rng) / 6.37e6;
+    z.lon_rad += kSigP * n01(rng) / (6.37e6 * std::cos(z.lat_rad));
+    z.h_m += kSigP * n01(rng);
+    z.v_ne_m_s += kSigV * Eigen::Vector2d(n01(rng), n01(rng));
+  }
+  est::NavigatorConfig cfg;
+  cfg.noise = model;
+  RunStats stats;
+  TruthComparer cmp(truth, kRate, stats);
+  est::Navigator nav;
+  nav.init(cfg, &cmp, nullptr);
+  feed(nav, imu, gnss);
+  // Scored from 60 s after alignment: the coarse heading prior is not Gaussian.
+  const double from = stats.align_t + 60.0;
+  const double nees_in = fraction_inside(stats.nees, &stats.t, from, kChi2Lo9, kChi2Hi9);
+  const double nis_in = fraction_inside(stats.nis_pos, nullptr, 0.0, kChi2Lo3, kChi2Hi3);
+  double mean_nees = 0.0;
+  for (double v : stats.nees) mean_nees += v / static_cast<double>(stats.nees.size());
+  std::printf("NEES inside 95%% bounds %.3f (mean %.2f, 9 dof); NIS inside %.3f; rejected %zu\n", nees_in, mean_nees,
+              nis_in, stats.rejected);
+  // The requirement: inside the two-sided 95% bounds at least 90% of the time.
+  EXPECT_GE(nees_in, 0.90);
+  EXPECT_GE(nis_in, 0.90);
+}
+
+}  // namespace
+}  // namespace sinu::test

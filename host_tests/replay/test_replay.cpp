@@ -1,0 +1,125 @@
+// sinu replay end to end on simulated flights (sinu simulate, issue 3):
+// outputs, bad input, and the bounded allocation count of the whole replay.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "firmware/replay/replay_runner.hpp"
+#include "host_tests/support/alloc_counter.hpp"
+#include "host_tests/support/run_process.hpp"
+#include "host_tests/support/temp_dir.hpp"
+
+namespace sinu::test {
+namespace {
+
+std::string simulate(const TempDir& dir, const std::string& name, int seconds) {
+  const std::string out = (dir.path() / name).string();
+  const auto r = run_sinu({"simulate", "flight", "--out", out, "--seed", "7", "--duration", std::to_string(seconds)});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return out;
+}
+
+// First IMU time of a dataset: simulated flights do not start at t = 0.
+double first_t(const std::string& ds) {
+  std::ifstream in(ds + "/imu.csv");
+  std::string line;
+  std::getline(in, line);
+  std::getline(in, line);
+  return std::stod(line.substr(0, line.find(',')));
+}
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+TEST(Replay, WritesNavInnovationsAndSummary) {
+  TempDir dir;
+  const std::string ds = simulate(dir, "f", 300);
+  const std::string out = (dir.path() / "out").string();
+  const std::string outage = std::to_string(first_t(ds) + 200.0) + ":20";
+  const auto r = run_sinu({"replay", "--in", ds, "--model", "gm", "--gps-latency", "0.045", "--outage", outage, "--out", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto s = read_json(out + "/summary.json");
+  EXPECT_TRUE(s["aligned"].get<bool>());
+  EXPECT_EQ(s["states"].get<int>(), 15);
+  // GPS errors of the simulator are ~1.3 m per axis; with GPS the solution sits within a few metres.
+  EXPECT_LT(s["rmse"]["pos_h_m"].get<double>(), 5.0);
+  ASSERT_EQ(s["outages"].size(), 1u);
+  EXPECT_GT(s["gnss"]["dropped_outage"].get<int>(), 90);  // 20 s at 5 Hz
+  EXPECT_GT(s["corrupt_sentences"].get<int>(), 0);  // the simulator corrupts 0.2% of sentences by default
+  std::ifstream nav(out + "/nav.csv");
+  std::string header;
+  std::getline(nav, header);
+  EXPECT_EQ(header.rfind("t,lat,lon,h,vn,ve,vd,roll,pitch,yaw,", 0), 0u) << "truth.csv columns first";
+  std::ifstream inn(out + "/innovations.csv");
+  std::getline(inn, header);
+  EXPECT_EQ(header, "t,source,component,innovation,sigma,test_ratio,accepted");
+}
+
+TEST(Replay, ArModelHasNinePlusSixPStates) {
+  TempDir dir;
+  const std::string ds = simulate(dir, "f", 300);
+  const std::string out = (dir.path() / "out").string();
+  const auto r = run_sinu({"replay", "--in", ds, "--model", "ar", "--ar-order", "3", "--effects", "lever_arm,gps_latency",
+                           "--out", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // Without --calib the built-in default is AR(1) (--ar-order picks from calib.json): 9 + 6*1 + 3 + 1.
+  EXPECT_EQ(read_json(out + "/summary.json")["states"].get<int>(), 9 + 6 * 1 + 4);
+}
+
+TEST(Replay, BadInputIsAUsageOrRuntimeErrorWithAMessage) {
+  TempDir dir;
+  const std::string out = (dir.path() / "out").string();
+  auto r = run_sinu({"replay", "--in", "/nonexistent", "--model", "gm", "--out", out});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("imu.csv"), std::string::npos) << r.err;
+  r = run_sinu({"replay", "--in", "/nonexistent", "--model", "kalman", "--out", out});
+  EXPECT_EQ(r.exit_code, 2);
+  r = run_sinu({"replay", "--in", "/x", "--effects", "warp_drive", "--out", out});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("warp_drive"), std::string::npos);
+  r = run_sinu({"replay", "--in", "/x", "--outage", "12", "--out", out});
+  EXPECT_EQ(r.exit_code, 2);
+  const std::string calib = (dir.path() / "calib.json").string();
+  std::ofstream(calib) << "{\"axes\": {\"ax\": {}}}";
+  const std::string ds = simulate(dir, "f", 300);
+  r = run_sinu({"replay", "--in", ds, "--calib", calib, "--model", "gm", "--out", out});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("axes.ax.gm"), std::string::npos) << r.err;
+}
+
+// The whole replay (reading, EKF, nav.csv/innovations.csv writing, summary)
+// allocates the same bounded number of times for a 5- and a 20-minute flight.
+TEST(ReplayAlloc, AllocationCountDoesNotGrowWithFlightLength) {
+  TempDir dir;
+  std::uint64_t counts[2] = {0, 0};
+  const int seconds[2] = {300, 1200};
+  for (int i = 0; i < 2; ++i) {
+    static constexpr const char* kNames[2][2] = {{"f0", "o0"}, {"f1", "o1"}};  // (GCC 12 -Wrestrict false positive on "f" + to_string)
+    const std::string ds = simulate(dir, kNames[i][0], seconds[i]);
+    replay::ReplayOptions opt;
+    opt.in_dir = ds;
+    opt.out_dir = (dir.path() / kNames[i][1]).string();
+    opt.calib.kind = est::NoiseModelKind::AutoRegressive;
+    opt.gps_latency_s = 0.045;
+    opt.outages = {{first_t(ds) + 200.0, 20.0}};
+    opt.quiet = true;
+    replay::ReplayTotals totals;
+    std::string error;
+    AllocationScope scope;
+    ASSERT_TRUE(replay::run_replay(opt, totals, error)) << error;
+    counts[i] = scope.count();
+    EXPECT_TRUE(totals.aligned);
+  }
+  std::printf("allocations: %llu (300 s), %llu (1200 s)\n", static_cast<unsigned long long>(counts[0]),
+              static_cast<unsigned long long>(counts[1]));
+  // Slack of 16 for the corrupt-sentence diagnostics (strings kept for the
+  // first corrupt line only) and JSON containers sized by counts' digits.
+  EXPECT_LE(counts[1], counts[0] + 16);
+  EXPECT_LT(counts[1], 2000u);
+}
+
+}  // namespace
+}  // namespace sinu::test
