@@ -11,7 +11,15 @@ seconds="${1:-60}"
 build=build/fuzz
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
   -DSINU_FUZZ=ON -DSINU_WERROR=ON -DSINU_BUILD_TESTS=OFF -DSINU_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --build "$build" -j2 --target fuzz_nmea fuzz_recording sinu
+# The seed recording is made by `sinu convert`: use the release build's when it
+# exists (CI builds it first), else build one here with the fuzz flags.
+sinu_bin=build/release/firmware/sinu
+if [ -x "$sinu_bin" ]; then
+  cmake --build "$build" -j2 --target fuzz_nmea fuzz_recording
+else
+  cmake --build "$build" -j2 --target fuzz_nmea fuzz_recording sinu
+  sinu_bin="$build/firmware/sinu"
+fi
 
 seeds="$build/seeds"
 rm -rf "$seeds" && mkdir -p "$seeds/nmea" "$seeds/recording" "$build/findings"
@@ -24,7 +32,7 @@ mkdir -p "$data"
   for k in $(seq 0 19); do echo "$((100 + k)).025,0.1,0,-9.8,0.01,0,0,20,0,40,25"; done
 } >"$data/imu.csv"
 printf '100.5,$GPGGA,101520.40,3024.51234,N,11421.12345,E,1,12,0.8,45.3,M,-2.1,M,,*51\n' >"$data/gps.nmea"
-ASAN_OPTIONS=detect_leaks=0 "$build/firmware/sinu" convert "$data" "$seeds/recording/small.raw" >/dev/null
+ASAN_OPTIONS=detect_leaks=0 "$sinu_bin" convert "$data" "$seeds/recording/small.raw" >/dev/null
 
 status=0
 for target in fuzz_nmea fuzz_recording; do
