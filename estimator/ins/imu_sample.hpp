@@ -9,7 +9,9 @@ struct ImuSample {
   double t_s = 0.0;
   Eigen::Vector3d specific_force_b_m_s2 = Eigen::Vector3d::Zero();
   Eigen::Vector3d angular_rate_b_rad_s = Eigen::Vector3d::Zero();
+  Eigen::Vector3d mag_b_uT = Eigen::Vector3d::Zero();  // magnetic flux density, body FRD [uT]
   double temp_degC = 0.0;
+  bool has_mag = false;
   bool has_temp = false;
 };
 

@@ -271,6 +271,11 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
     const auto g = r.angular_rate_b_rad_s();
     s.specific_force_b_m_s2 = {f[0], f[1], f[2]};
     s.angular_rate_b_rad_s = {g[0], g[1], g[2]};
+    s.has_mag = r.has_mag();
+    if (s.has_mag) {
+      const auto m = r.mag_b_uT();
+      s.mag_b_uT = {m[0], m[1], m[2]};
+    }
     s.has_temp = r.has_temp();
     s.temp_degC = s.has_temp ? r.temp_degC() : 0.0;
     while (fix_pending && fix.arrival_s <= s.t_s) {
