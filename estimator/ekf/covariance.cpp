@@ -16,8 +16,10 @@ void propagate_covariance(StateMat& P, const StateMat& Phi, const StateVec& q_di
   // gather each row's non-zeros once, then A = Phi P and the upper triangle of
   // A Phi^T cost nnz(Phi) * n instead of n^3.
   const Eigen::Index n = P.rows();
-  std::array<std::array<Eigen::Index, kMaxStates>, kMaxStates> col{};
-  std::array<std::array<double, kMaxStates>, kMaxStates> val{};
+  // Only the first nnz[r] entries of each row are ever read: no need to clear
+  // 50 KB per call.
+  std::array<std::array<Eigen::Index, kMaxStates>, kMaxStates> col;
+  std::array<std::array<double, kMaxStates>, kMaxStates> val;
   std::array<Eigen::Index, kMaxStates> nnz{};
   for (Eigen::Index i = 0; i < n; ++i) {
     const auto r = static_cast<std::size_t>(i);
@@ -34,7 +36,7 @@ void propagate_covariance(StateMat& P, const StateMat& Phi, const StateVec& q_di
     A.row(i).setZero();
     for (Eigen::Index c = 0; c < nnz[r]; ++c) {
       const auto cc = static_cast<std::size_t>(c);
-      A.row(i) += val[r][cc] * P.row(col[r][cc]);
+      A.row(i) += val[r][cc] * P.col(col[r][cc]).transpose();  // P symmetric: contiguous column
     }
   }
   for (Eigen::Index j = 0; j < n; ++j) {

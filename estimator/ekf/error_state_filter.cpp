@@ -32,6 +32,13 @@ void ErrorStateFilter::init(const StateLayout& layout, const SensorNoise& noise,
     const double sig = tuning.initial_sigma[i];
     for (Eigen::Index j = 0; j < s.size; ++j) P_(s.start + j, s.start + j) = sig * sig;
   }
+  if (layout.has(Effect::GpsPositionBias)) {
+    const Eigen::Index b = layout.of(Effect::GpsPositionBias).start;
+    P_.block(b, b, 3, 3) = tuning.gps_bias_sigma_ned_m.cwiseAbs2().asDiagonal();
+  }
+  gps_bias_ned_.setZero();
+  mag_field_n_.setZero();
+  mag_hard_iron_b_.setZero();
   sensor_hat_ = StateVec::Zero(layout.sensor.size);
   ar_clock_s_ = 0.0;
 }
@@ -93,6 +100,20 @@ void ErrorStateFilter::build_transition(const PredictInput& in, int ar_steps, St
     const Slice& sl = L.effect[i];
     for (Eigen::Index j = 0; j < sl.size; ++j) q(sl.start + j) = tuning_.random_walk[i] * tuning_.random_walk[i] * dt;
   }
+  auto bias_walk = [&](Effect e, double walk) {
+    if (!L.has(e) || !(walk > 0.0)) return;
+    q.segment(L.of(e).start, 3).setConstant(walk * walk * dt);
+  };
+  bias_walk(Effect::AccelBias, noise_.accel_bias_walk);
+  bias_walk(Effect::GyroBias, noise_.gyro_bias_walk);
+  if (L.has(Effect::GpsPositionBias)) {  // first-order GM per NED axis
+    const Eigen::Index b = L.of(Effect::GpsPositionBias).start;
+    const double phi = std::exp(-dt / tuning_.gps_bias_tau_s);
+    for (Eigen::Index j = 0; j < 3; ++j) {
+      Phi(b + j, b + j) = phi;
+      q(b + j) = tuning_.gps_bias_sigma_ned_m(j) * tuning_.gps_bias_sigma_ned_m(j) * (1.0 - phi * phi);
+    }
+  }
 }
 
 void ErrorStateFilter::predict(const PredictInput& in) {
@@ -113,6 +134,31 @@ void ErrorStateFilter::predict(const PredictInput& in) {
   const Eigen::Index S = layout_.sensor.start;
   const Eigen::Index m = layout_.sensor.size;
   sensor_hat_ = (Phi.block(S, S, m, m) * sensor_hat_).eval();
+  if (layout_.has(Effect::GpsPositionBias)) gps_bias_ned_ *= std::exp(-in.dt_s / tuning_.gps_bias_tau_s);
+}
+
+void ErrorStateFilter::start_mag_field(const NavState& nav, const Eigen::Vector3d& mag_b_uT, double noise_sigma_uT) {
+  const Eigen::Matrix3d C = nav.C_nb();
+  mag_field_n_ = C * (mag_b_uT - mag_hard_iron_b_);
+  if (!layout_.has(Effect::MagEarthField)) return;
+  // F_hat = C_hat (m - h) with C_hat = (I - [phi x]) C: dF = F - F_hat = -[F x] phi
+  // (+ C dh + noise), so P_FF = [F x] P_phi [F x]^T + ..., P_F,x = -[F x] P_phi,x.
+  const Eigen::Index F = layout_.of(Effect::MagEarthField).start, A = layout_.att.start;
+  const Eigen::Matrix3d J = -skew(mag_field_n_);
+  P_.middleRows(F, 3).setZero();
+  P_.middleCols(F, 3).setZero();
+  const StateMat row = J * P_.middleRows(A, 3);  // 3 x n
+  P_.middleRows(F, 3) = row;
+  P_.middleCols(F, 3) = row.transpose();
+  Eigen::Matrix3d PFF = J * P_.block(A, A, 3, 3) * J.transpose();
+  PFF.diagonal().array() += noise_sigma_uT * noise_sigma_uT;
+  if (layout_.has(Effect::MagHardIron)) {
+    const Eigen::Index H = layout_.of(Effect::MagHardIron).start;
+    PFF += C * P_.block(H, H, 3, 3) * C.transpose();
+    P_.block(F, H, 3, 3) = C * P_.block(H, H, 3, 3);
+    P_.block(H, F, 3, 3) = P_.block(F, H, 3, 3).transpose();
+  }
+  P_.block(F, F, 3, 3) = PFF;
 }
 
 void ErrorStateFilter::feedback(StateVec& dx, NavState& nav) {
@@ -136,6 +182,9 @@ void ErrorStateFilter::feedback(StateVec& dx, NavState& nav) {
   add3(Effect::LeverArm, lever_arm_b_);
   add3(Effect::AccelBias, accel_bias_);
   add3(Effect::GyroBias, gyro_bias_);
+  add3(Effect::GpsPositionBias, gps_bias_ned_);
+  add3(Effect::MagEarthField, mag_field_n_);
+  add3(Effect::MagHardIron, mag_hard_iron_b_);
   if (L.has(Effect::GpsLatency)) latency_s_ += dx(L.of(Effect::GpsLatency).start);
   dx.setZero();
 }
@@ -191,6 +240,9 @@ double ErrorStateFilter::effect(Effect e, Eigen::Index i) const {
     case Effect::GyroTempBias: return gyro_temp_(i);
     case Effect::AccelBias: return accel_bias_(i);
     case Effect::GyroBias: return gyro_bias_(i);
+    case Effect::GpsPositionBias: return gps_bias_ned_(i);
+    case Effect::MagEarthField: return mag_field_n_(i);
+    case Effect::MagHardIron: return mag_hard_iron_b_(i);
   }
   return 0.0;
 }

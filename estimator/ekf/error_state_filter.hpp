@@ -57,6 +57,15 @@ class ErrorStateFilter {
   double effect_sigma(Effect e, Eigen::Index i) const;
   Eigen::Vector3d lever_arm_b_m() const { return lever_arm_b_; }
   double gps_latency_s() const { return latency_s_; }
+  Eigen::Vector3d gps_position_bias_ned_m() const { return gps_bias_ned_; }
+  Eigen::Vector3d mag_earth_field_n_uT() const { return mag_field_n_; }
+  Eigen::Vector3d mag_hard_iron_b_uT() const { return mag_hard_iron_b_; }
+  const EffectTuning& tuning() const { return tuning_; }
+
+  /// Starts the magnetometer model from one sample: F_n = C_nb (m_b - h_b),
+  /// with the uncertainty (and the attitude correlation) that the current
+  /// attitude error and the sample's noise give it.
+  void start_mag_field(const NavState& nav, const Eigen::Vector3d& mag_b_uT, double noise_sigma_uT);
 
   /// Seeds the gyro bias measured at rest and its uncertainty [rad/s]: into
   /// the gyro_bias states when active, else into the sensor-error states
@@ -82,6 +91,8 @@ class ErrorStateFilter {
   Eigen::Vector3d accel_temp_ = Eigen::Vector3d::Zero(), gyro_temp_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d accel_bias_ = Eigen::Vector3d::Zero(), gyro_bias_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d lever_arm_b_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gps_bias_ned_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d mag_field_n_ = Eigen::Vector3d::Zero(), mag_hard_iron_b_ = Eigen::Vector3d::Zero();
   double latency_s_ = 0.0;
   double temp_ref_degC_ = 0.0;
 };

@@ -32,6 +32,13 @@ struct SensorNoise {
   double ar_sample_period_s = 0.025;     // the AR models' time step
   double accel_white_m_s2_rthz = 0.0;    // velocity random walk density
   double gyro_white_rad_s_rthz = 0.0;    // angle random walk density
+  // Random-walk density of the accel_bias / gyro_bias states [unit/sqrt(s)],
+  // from the Allan deviation at cluster times of minutes (calib_json.cpp,
+  // bias_walk_from_allan). The GM/AR models
+  // fitted to the denoised static series follow the error over seconds; this
+  // covers the slow wander they cannot (minutes). 0: EffectTuning's default.
+  double accel_bias_walk = 0.0;
+  double gyro_bias_walk = 0.0;
 
   /// States per axis in the EKF.
   Eigen::Index order() const;

@@ -30,15 +30,22 @@ inline constexpr Eigen::Index kFirstGyro = gx;
 /// accel_bias / gyro_bias are random-constant (turn-on) biases: calib.json's
 /// GM/AR models describe the zero-mean part of the error of a static session,
 /// so a unit's per-power-on bias needs its own states.
+/// gps_position_bias: the receiver's slowly varying position error (first-order
+/// GM, NED; atmosphere, multipath, orbit errors) that a GST sigma does not
+/// separate from its white part.
+/// mag_earth_field (NED) and mag_hard_iron (body): the magnetometer's model
+/// m_b = C_bn F_n + h_b; the Earth field is a state so the declination and
+/// inclination need not be known (PX4 EKF2 does the same).
 enum class Effect : std::uint8_t {
-  AccelScale, GyroScale, LeverArm, GpsLatency, AccelTempBias, GyroTempBias, AccelBias, GyroBias
+  AccelScale, GyroScale, LeverArm, GpsLatency, AccelTempBias, GyroTempBias, AccelBias, GyroBias,
+  GpsPositionBias, MagEarthField, MagHardIron
 };
-inline constexpr std::size_t kEffectCount = 8;
+inline constexpr std::size_t kEffectCount = 11;
 inline constexpr std::array<const char*, kEffectCount> kEffectNames = {
     "accel_scale", "gyro_scale", "lever_arm", "gps_latency", "accel_temp_bias", "gyro_temp_bias",
-    "accel_bias", "gyro_bias"};
-inline constexpr std::array<Eigen::Index, kEffectCount> kEffectDims = {3, 3, 3, 1, 3, 3, 3, 3};
-inline constexpr Eigen::Index kMaxEffectStates = 22;
+    "accel_bias", "gyro_bias", "gps_position_bias", "mag_earth_field", "mag_hard_iron"};
+inline constexpr std::array<Eigen::Index, kEffectCount> kEffectDims = {3, 3, 3, 1, 3, 3, 3, 3, 3, 3, 3};
+inline constexpr Eigen::Index kMaxEffectStates = 31;
 
 inline constexpr Eigen::Index kMaxStates = kNavStates + kSensorAxes * kMaxArOrder + kMaxEffectStates;
 

@@ -20,6 +20,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   gnss_.clear();
   alignment_.configure(cfg.alignment);
   have_prev_ = false;
+  have_raw_ = false;
   counters_ = {};
   nav_ = {};
   filter_.init(StateLayout::make(cfg.noise.order(), cfg.effects), cfg.noise, cfg.tuning, cfg.initial);
@@ -29,8 +30,22 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
 }
 
 void Navigator::push_imu(const ImuSample& raw) {
+  // Checked before the prefilter: one NaN would poison a wavelet's registers.
+  if (!raw.specific_force_b_m_s2.allFinite() || !raw.angular_rate_b_rad_s.allFinite()) {
+    ++counters_.imu_invalid;
+    return;
+  }
+  if (have_raw_ && !(raw.t_s > last_raw_t_s_)) {
+    ++counters_.imu_non_increasing;
+    return;
+  }
+  have_raw_ = true;
+  last_raw_t_s_ = raw.t_s;
   ImuSample s;
-  if (!prefilter_->push(raw, s)) return;
+  if (prefilter_->push(raw, s)) push_filtered(s);
+}
+
+void Navigator::push_filtered(const ImuSample& s) {
   if (!imu_.empty() && !(s.t_s > imu_.back().t_s)) {
     ++counters_.imu_non_increasing;
     return;
@@ -51,6 +66,8 @@ void Navigator::push_gnss(const GnssObservation& z) {
 }
 
 void Navigator::flush() {
+  ImuSample s;
+  while (prefilter_->drain(s)) push_filtered(s);
   while (!imu_.empty()) {
     process(imu_.front());
     imu_.pop();
@@ -58,10 +75,6 @@ void Navigator::flush() {
 }
 
 void Navigator::process(const ImuSample& s) {
-  if (!s.specific_force_b_m_s2.allFinite() || !s.angular_rate_b_rad_s.allFinite()) {
-    ++counters_.imu_invalid;
-    return;
-  }
   if (!have_prev_) {
     prev_ = s;
     have_prev_ = true;

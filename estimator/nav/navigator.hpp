@@ -87,6 +87,7 @@ class Navigator {
   const NavCounters& counters() const { return counters_; }
 
  private:
+  void push_filtered(const ImuSample& s);
   void process(const ImuSample& s);
   void fuse_due_gnss(double t_now, double dt, const BodyRates& now);
   bool fuse(AidingSource src, const Measurement& m, double t_meas);
@@ -104,6 +105,8 @@ class Navigator {
   NavState nav_;
   ImuSample prev_;
   bool have_prev_ = false;
+  bool have_raw_ = false;
+  double last_raw_t_s_ = 0.0;
   Eigen::Vector3d accel_n_ = Eigen::Vector3d::Zero();
   StateVec dx_;
   double last_position_accepted_t_ = 0.0;

@@ -16,6 +16,8 @@ class ImuPrefilter {
   virtual int delay_samples() const = 0;
   /// Feeds one raw sample; true when `out` holds the next filtered sample.
   virtual bool push(const ImuSample& in, ImuSample& out) = 0;
+  /// End of data: true while samples still held back come out.
+  virtual bool drain(ImuSample&) { return false; }
 };
 
 /// No filtering, no delay.

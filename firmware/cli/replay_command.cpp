@@ -101,6 +101,9 @@ void add_replay_command(CLI::App& app, Action& action) {
       ->capture_default_str();
   sub->add_option("--lever-arm", c->lever_arm, "Antenna minus IMU in body FRD [m], x,y,z")->delimiter(',');
   sub->add_option("--nav-rate", c->opt.nav_rate_hz, "nav.csv rows per second (0: every IMU sample)")->capture_default_str();
+  sub->add_option("--denoise", c->opt.denoise,
+                  "Wavelet denoiser in front of the INS: auto (calib.json's), none, or WAVELET:LEVELS (db4:3)")
+      ->capture_default_str();
   sub->add_option("--gate", c->opt.gate_sigma, "Innovation gate [sigma]")->capture_default_str();
   sub->add_option("--out", c->opt.out_dir, "Output folder")->required();
   sub->add_flag("--quiet", c->opt.quiet, "Do not print the summary");

@@ -16,7 +16,19 @@ struct CalibChoice {
   int ar_order = 3;
 };
 
-/// Fills `noise`; false with `error` = "calib.json: <key>: <why>" otherwise.
-bool load_calib(const std::string& path, const CalibChoice& choice, est::SensorNoise& noise, std::string& error);
+/// The denoiser the models were fitted after (calib.json "denoiser"): the
+/// same one must run in front of the INS for the models to describe its input.
+struct DenoiserSpec {
+  bool wavelet = false;        // false: none
+  std::string name = "none";   // "db4", ...
+  int levels = 0;
+};
+
+/// "none", "WAVELET:LEVELS" (e.g. "db4:3"); false with `error` otherwise.
+bool parse_denoiser(const std::string& text, DenoiserSpec& out, std::string& error);
+
+/// Fills `noise` (and `denoiser` from calib.json's "denoiser" block, none if absent); false with `error` = "calib.json: <key>: <why>" otherwise.
+bool load_calib(const std::string& path, const CalibChoice& choice, est::SensorNoise& noise, DenoiserSpec& denoiser,
+                std::string& error);
 
 }  // namespace sinu::replay

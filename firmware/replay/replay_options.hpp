@@ -27,6 +27,7 @@ struct ReplayOptions {
   double nav_rate_hz = 10.0;  // nav.csv rows per second; 0: every IMU sample
   double gate_sigma = 5.0;
   GnssSigmaConfig sigma;
+  std::string denoise = "auto";  // auto: calib.json's denoiser (none without calib); none; WAVELET:LEVELS
   bool quiet = false;
 };
 

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "estimator/ins/rotation.hpp"
+#include "estimator/prefilter/wavelet_prefilter.hpp"
 #include "firmware/dataset/dataset_paths.hpp"
 #include "firmware/dataset/imu_csv.hpp"
 #include "firmware/dataset/nmea_log.hpp"
@@ -189,7 +190,13 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
   const io::DatasetPaths paths{opt.in_dir};
   est::NavigatorConfig cfg;
   cfg.noise = est::SensorNoise::defaults(opt.calib.kind);
-  if (!opt.calib_path.empty() && !load_calib(opt.calib_path, opt.calib, cfg.noise, error)) return false;
+  DenoiserSpec denoiser;
+  if (!opt.calib_path.empty() && !load_calib(opt.calib_path, opt.calib, cfg.noise, denoiser, error)) return false;
+  if (opt.denoise != "auto" && !parse_denoiser(opt.denoise, denoiser, error)) return false;
+  std::unique_ptr<est::ImuPrefilter> prefilter;
+  if (denoiser.wavelet) {
+    prefilter = est::make_wavelet_prefilter(*est::wavelet::parse_wavelet(denoiser.name), denoiser.levels);
+  }
   cfg.effects = opt.effects;
   cfg.gate_sigma = opt.gate_sigma;
   cfg.gps_latency_s = opt.gps_latency_s;
@@ -227,7 +234,7 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
   metrics.init(opt.outages);
   ReplayObserver observer(*navigator, metrics, nav_out, innov_out, has_truth ? &truth : nullptr,
                           opt.nav_rate_hz > 0.0 ? 1.0 / opt.nav_rate_hz : 0.0);
-  navigator->init(cfg, &observer, nullptr);
+  navigator->init(cfg, &observer, prefilter.get());
   nav_out.text(nav_header(navigator->filter().layout()));
   innov_out.text("t,source,component,innovation,sigma,test_ratio,accepted\n");
 
@@ -307,6 +314,7 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
   if (opt.calib.kind == est::NoiseModelKind::AutoRegressive) sj["ar"] = {{"method", opt.calib.ar_method}, {"order", opt.calib.ar_order}};
   sj["calib"] = opt.calib_path.empty() ? json(nullptr) : json(opt.calib_path);
   sj["states"] = flt.layout().dim;
+  sj["denoiser"] = denoiser.wavelet ? json(denoiser.name + ":" + std::to_string(denoiser.levels)) : json("none");
   json eff = json::array();
   for (std::size_t e = 0; e < est::kEffectCount; ++e) {
     const auto ef = static_cast<est::Effect>(e);

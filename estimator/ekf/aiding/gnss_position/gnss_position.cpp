@@ -20,6 +20,8 @@ Measurement gnss_position_measurement(const ErrorStateFilter& filter, const NavS
   y.x() = (nav.lat_rad - z.lat_rad) * rm + offset_n.x();
   y.y() = (nav.lon_rad - z.lon_rad) * rn * std::cos(nav.lat_rad) + offset_n.y();
   y.z() = -(nav.h_m - z.h_m) + offset_n.z();
+  const bool bias = L.has(Effect::GpsPositionBias);
+  if (bias) y += filter.gps_position_bias_ned_m();  // z_hat = antenna + b_hat
 
   Measurement m;
   m.gate_sigma = gate_sigma;
@@ -29,7 +31,16 @@ Measurement gnss_position_measurement(const ErrorStateFilter& filter, const NavS
   m.H.block(0, L.att.start, 3, 3) = skew(lever_n);
   if (L.has(Effect::LeverArm)) m.H.block(0, L.of(Effect::LeverArm).start, 3, 3) = -C;
   if (L.has(Effect::GpsLatency)) m.H.block(0, L.of(Effect::GpsLatency).start, 3, 1) = nav.v_n_m_s;
-  m.R = z.sigma_ned_m.cwiseAbs2().asDiagonal();
+  if (bias) m.H.block(0, L.of(Effect::GpsPositionBias).start, 3, 3) = -Eigen::Matrix3d::Identity();
+  // With the bias states GST's sigma is split: its correlated part lives in
+  // the bias, the rest is white (kept at least 30 % of GST's, so an
+  // optimistic GST cannot make the update overconfident).
+  Eigen::Vector3d var = z.sigma_ned_m.cwiseAbs2();
+  if (bias) {
+    const Eigen::Vector3d gm2 = filter.tuning().gps_bias_sigma_ned_m.cwiseAbs2();
+    var = (var - gm2).cwiseMax(0.09 * var);
+  }
+  m.R = var.asDiagonal();
   return m;
 }
 

@@ -1,0 +1,11 @@
+#include "estimator/prefilter/wavelet_prefilter.hpp"
+
+namespace sinu::est {
+
+std::unique_ptr<ImuPrefilter> make_wavelet_prefilter(wavelet::WaveletKind kind, int levels) {
+  return wavelet::with_denoiser(kind, levels, []<class Denoiser>() -> std::unique_ptr<ImuPrefilter> {
+    return std::make_unique<WaveletPrefilter<Denoiser>>();
+  });
+}
+
+}  // namespace sinu::est
