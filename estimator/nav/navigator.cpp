@@ -5,6 +5,7 @@
 #include "estimator/earth/wgs84.hpp"
 #include "estimator/ekf/aiding/gnss_position/gnss_position.hpp"
 #include "estimator/ekf/aiding/gnss_velocity/gnss_velocity.hpp"
+#include "estimator/ekf/aiding/magnetometer/magnetometer.hpp"
 
 namespace sinu::est {
 
@@ -21,6 +22,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   alignment_.configure(cfg.alignment);
   have_prev_ = false;
   have_raw_ = false;
+  mag_started_ = false;
   counters_ = {};
   nav_ = {};
   filter_.init(StateLayout::make(cfg.noise.order(), cfg.effects), cfg.noise, cfg.tuning, cfg.initial);
@@ -121,6 +123,7 @@ void Navigator::process(const ImuSample& s) {
   filter_.predict(in);
 
   fuse_due_gnss(s.t_s, dt, r1);
+  fuse_magnetometer(s);
   prev_ = s;
   emit();
 }
@@ -158,6 +161,20 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
     }
     gnss_.pop();
   }
+}
+
+void Navigator::fuse_magnetometer(const ImuSample& s) {
+  if (!s.has_mag || !s.mag_b_uT.allFinite() || !filter_.layout().has(Effect::MagEarthField)) return;
+  if (!mag_started_) {
+    filter_.start_mag_field(nav_, s.mag_b_uT, cfg_.mag_sigma_uT);
+    mag_started_ = true;
+    last_mag_t_s_ = s.t_s;
+    return;
+  }
+  if (s.t_s - last_mag_t_s_ < cfg_.mag_period_s - 1e-6) return;
+  last_mag_t_s_ = s.t_s;
+  fuse(AidingSource::Magnetometer, magnetometer_measurement(filter_, nav_, s.mag_b_uT, cfg_.mag_sigma_uT, cfg_.gate_sigma),
+       s.t_s);
 }
 
 void Navigator::reset_to_gnss(const GnssObservation& z, double dt_back) {

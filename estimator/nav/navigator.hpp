@@ -23,9 +23,10 @@ namespace sinu::est {
 inline constexpr std::size_t kImuBufferCapacity = 512;   // 0.5 s at 1000 Hz
 inline constexpr std::size_t kGnssBufferCapacity = 32;   // 6 s of 5 Hz epochs
 
-enum class AidingSource : std::uint8_t { GnssPosition, GnssVelocity };
-inline constexpr std::size_t kAidingSourceCount = 2;
-inline constexpr std::array<const char*, kAidingSourceCount> kAidingSourceNames = {"gnss_position", "gnss_velocity"};
+enum class AidingSource : std::uint8_t { GnssPosition, GnssVelocity, Magnetometer };
+inline constexpr std::size_t kAidingSourceCount = 3;
+inline constexpr std::array<const char*, kAidingSourceCount> kAidingSourceNames = {"gnss_position", "gnss_velocity",
+                                                                                   "magnetometer"};
 
 struct NavigatorConfig {
   SensorNoise noise = SensorNoise::defaults(NoiseModelKind::GaussMarkov);
@@ -38,6 +39,11 @@ struct NavigatorConfig {
   double gps_latency_s = 0.0;        // configured latency (initial value when estimated)
   Eigen::Vector3d lever_arm_b_m = Eigen::Vector3d::Zero();  // antenna minus IMU, body FRD
   bool fuse_velocity = true;
+  // Magnetometer: fused when the layout has Effect::MagEarthField and the
+  // sample carries a field; the field state starts from the first sample after
+  // alignment. sigma covers the sensor noise and small disturbances.
+  double mag_sigma_uT = 1.0;
+  double mag_period_s = 0.1;          // fuse at most this often (10 Hz)
   double reset_after_rejected_s = 5.0;  // position rejected this long: fuse ungated / reset (as PX4 resets)
   double max_imu_gap_s = 0.5;        // longer gaps are counted (and bridged)
 };
@@ -90,6 +96,7 @@ class Navigator {
   void push_filtered(const ImuSample& s);
   void process(const ImuSample& s);
   void fuse_due_gnss(double t_now, double dt, const BodyRates& now);
+  void fuse_magnetometer(const ImuSample& s);
   bool fuse(AidingSource src, const Measurement& m, double t_meas);
   void reset_to_gnss(const GnssObservation& z, double dt_back);
   void emit();
@@ -106,6 +113,8 @@ class Navigator {
   ImuSample prev_;
   bool have_prev_ = false;
   bool have_raw_ = false;
+  bool mag_started_ = false;
+  double last_mag_t_s_ = 0.0;
   double last_raw_t_s_ = 0.0;
   Eigen::Vector3d accel_n_ = Eigen::Vector3d::Zero();
   StateVec dx_;

@@ -106,6 +106,11 @@ void add_replay_command(CLI::App& app, Action& action) {
       ->capture_default_str();
   sub->add_option("--gate", c->opt.gate_sigma, "Innovation gate [sigma]")->capture_default_str();
   sub->add_option("--out", c->opt.out_dir, "Output folder")->required();
+  sub->add_option("--mag-sigma", c->opt.mag_sigma_uT, "Magnetometer noise per axis, 1 sigma [uT]")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub->add_flag("--no-mag", [c](std::int64_t) { c->opt.use_mag = false; },
+                "Do not fuse the magnetometer even when imu.csv has one");
   sub->add_flag("--quiet", c->opt.quiet, "Do not print the summary");
   sub->callback([&action, c] { action = [c] { return run(*c); }; });
 }

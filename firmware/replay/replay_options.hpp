@@ -29,6 +29,8 @@ struct ReplayOptions {
   GnssSigmaConfig sigma;
   std::string denoise = "auto";  // auto: calib.json's denoiser (none without calib); none; WAVELET:LEVELS
   bool quiet = false;
+  double mag_sigma_uT = 1.0;  // magnetometer noise + disturbance, 1 sigma per axis
+  bool use_mag = true;  // fuse the magnetometer when imu.csv has one (adds mag_earth_field)
 };
 
 /// Parses "START:DURATION,START:DURATION"; false with `error` on bad input.

@@ -58,7 +58,8 @@ class ReplayObserver final : public est::NavObserver {
 
   void on_innovation(const est::InnovationRecord& rec) override {
     metrics_.add_innovation(rec);
-    static constexpr const char* kComponents[2][3] = {{"north", "east", "down"}, {"north", "east", ""}};
+    static constexpr const char* kComponents[est::kAidingSourceCount][3] = {
+        {"north", "east", "down"}, {"north", "east", ""}, {"x", "y", "z"}};
     const auto src = static_cast<std::size_t>(rec.source);
     for (Eigen::Index i = 0; i < rec.result.rows; ++i) {
       innov_out_.number(rec.t_s, 6);
@@ -168,6 +169,14 @@ class ReplayObserver final : public est::NavObserver {
   double first_t_ = NAN;
 };
 
+/// True when the first complete imu.csv row carries a magnetometer sample.
+bool dataset_has_mag(const std::string& imu_path) {
+  io::CsvReader imu(io::kImuSchema);
+  io::CsvRow row;
+  if (!imu.open(imu_path) || imu.next(row) != io::ReadStatus::Row) return false;
+  return io::ImuRow{row}.has_mag();
+}
+
 std::string nav_header(const est::StateLayout& layout) {
   std::string h = "t,lat,lon,h,vn,ve,vd,roll,pitch,yaw,sigma_pn_m,sigma_pe_m,sigma_pd_m,sigma_vn,sigma_ve,sigma_vd,"
                   "sigma_att_n_deg,sigma_att_e_deg,sigma_att_d_deg,"
@@ -198,6 +207,8 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
     prefilter = est::make_wavelet_prefilter(*est::wavelet::parse_wavelet(denoiser.name), denoiser.levels);
   }
   cfg.effects = opt.effects;
+  cfg.mag_sigma_uT = opt.mag_sigma_uT;
+  if (opt.use_mag && dataset_has_mag(paths.imu())) cfg.effects.add(est::Effect::MagEarthField);
   cfg.gate_sigma = opt.gate_sigma;
   cfg.gps_latency_s = opt.gps_latency_s;
   cfg.lever_arm_b_m = opt.lever_arm_b_m;

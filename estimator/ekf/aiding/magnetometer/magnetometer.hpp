@@ -1,0 +1,18 @@
+#pragma once
+// Magnetometer aiding, three axes (PX4 EKF2's "3-axis" fusion): the body
+// field is the Earth field (a NED state) rotated into the body plus the hard
+// iron (a body state):  m_b = C_bn F_n + h_b + noise  [uT].
+// y = h(x_hat) - z. With phi (C_nb_hat = (I - [phi x]) C_nb), dF = F - F_hat,
+// dh = h - h_hat:  y = -C_bn_hat [F_hat x] phi - C_bn_hat dF - dh, so
+//   H_att = -C_bn [F x],  H_field = -C_bn,  H_hard_iron = -I.
+// Heading becomes observable on straight legs, where GNSS alone cannot see it.
+#include "estimator/ekf/error_state_filter.hpp"
+#include "estimator/ekf/measurement_update.hpp"
+
+namespace sinu::est {
+
+/// Needs the mag_earth_field states (Effect::MagEarthField) in the layout.
+Measurement magnetometer_measurement(const ErrorStateFilter& filter, const NavState& nav,
+                                     const Eigen::Vector3d& mag_b_uT, double sigma_uT, double gate_sigma);
+
+}  // namespace sinu::est
