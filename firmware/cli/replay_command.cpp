@@ -109,6 +109,9 @@ void add_replay_command(CLI::App& app, Action& action) {
   sub->add_option("--mag-sigma", c->opt.mag_sigma_uT, "Magnetometer noise per axis, 1 sigma [uT]")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  sub->add_option("--mag-declination", c->opt.mag_declination_deg,
+                  "Site's magnetic declination [deg, east +]: align heading with the magnetometer at rest "
+                  "(default: from the GNSS course once moving)");
   sub->add_flag("--no-mag", [c](std::int64_t) { c->opt.use_mag = false; },
                 "Do not fuse the magnetometer even when imu.csv has one");
   sub->add_flag("--quiet", c->opt.quiet, "Do not print the summary");

@@ -1,5 +1,6 @@
 #pragma once
 // Everything `sinu replay` needs, parsed and validated by the CLI.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -30,7 +31,8 @@ struct ReplayOptions {
   std::string denoise = "auto";  // auto: calib.json's denoiser (none without calib); none; WAVELET:LEVELS
   bool quiet = false;
   double mag_sigma_uT = 1.0;  // magnetometer noise + disturbance, 1 sigma per axis
-  bool use_mag = true;  // fuse the magnetometer when imu.csv has one (adds mag_earth_field)
+  bool use_mag = true;
+  double mag_declination_deg = NAN;  // set: align with the magnetometer at rest  // fuse the magnetometer when imu.csv has one (adds mag_earth_field)
 };
 
 /// Parses "START:DURATION,START:DURATION"; false with `error` on bad input.

@@ -208,6 +208,10 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
   }
   cfg.effects = opt.effects;
   cfg.mag_sigma_uT = opt.mag_sigma_uT;
+  if (opt.use_mag && std::isfinite(opt.mag_declination_deg)) {
+    cfg.alignment.mag_heading = true;
+    cfg.alignment.mag_declination_rad = opt.mag_declination_deg * kDegToRad;
+  }
   if (opt.use_mag && dataset_has_mag(paths.imu())) cfg.effects.add(est::Effect::MagEarthField);
   cfg.gate_sigma = opt.gate_sigma;
   cfg.gps_latency_s = opt.gps_latency_s;

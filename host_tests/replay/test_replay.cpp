@@ -2,7 +2,9 @@
 // outputs, bad input, and the bounded allocation count of the whole replay.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "firmware/replay/replay_runner.hpp"
@@ -70,6 +72,52 @@ TEST(Replay, ArModelHasNinePlusSixPStates) {
   // Without --calib the built-in default is AR(1) (--ar-order picks from calib.json): 9 + 6*1 + 3 + 1
   // (+ 3 for the Earth field when the magnetometer is fused; --no-mag here).
   EXPECT_EQ(read_json(out + "/summary.json")["states"].get<int>(), 9 + 6 * 1 + 4);
+}
+
+TEST(Replay, MagnetometerHeadingAlignsAtRestWhenTheDeclinationIsGiven) {
+  TempDir dir;
+  const std::string ds = (dir.path() / "f").string(), hidden = (dir.path() / "h.json").string();
+  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", ds, "--seed", "7", "--duration", "300", "--hidden-out", hidden}).exit_code, 0);
+  // The site's declination, as a user would take it from a field model (WMM) for the place.
+  const auto F = read_json(hidden)["earth_field_ned_uT"];
+  const double decl_deg = std::atan2(F[1].get<double>(), F[0].get<double>()) * 180.0 / 3.141592653589793;
+  const std::string mag = (dir.path() / "mag").string(), course = (dir.path() / "course").string();
+  ASSERT_EQ(run_sinu({"replay", "--in", ds, "--model", "gm", "--mag-declination", std::to_string(decl_deg), "--quiet",
+                      "--out", mag}).exit_code, 0);
+  ASSERT_EQ(run_sinu({"replay", "--in", ds, "--model", "gm", "--quiet", "--out", course}).exit_code, 0);
+  const double t0 = first_t(ds);
+  const double t_mag = read_json(mag + "/summary.json")["aligned_at_s"].get<double>();
+  const double t_course = read_json(course + "/summary.json")["aligned_at_s"].get<double>();
+  // Levelling needs its 2 s window at rest, then the next fix; the GNSS course waits for the take-off run.
+  EXPECT_LT(t_mag - t0, 3.0);
+  EXPECT_GT(t_course - t_mag, 10.0);
+  // The first nav.csv row's heading against truth: the magnetometer's noise (0.4 uT of ~35 uT
+  // horizontal, averaged over the window) and levelling error keep it well under 2 deg.
+  std::ifstream nav(mag + "/nav.csv"), truth(ds + "/truth.csv");
+  std::string line;
+  std::getline(nav, line);
+  std::getline(nav, line);
+  const double t_nav = std::stod(line.substr(0, line.find(',')));
+  double yaw_nav = 0.0;
+  {
+    std::stringstream ss(line);
+    std::string cell;
+    for (int i = 0; i <= 9; ++i) std::getline(ss, cell, ',');
+    yaw_nav = std::stod(cell);
+  }
+  std::getline(truth, line);
+  double yaw_truth = NAN;
+  while (std::getline(truth, line)) {
+    std::stringstream ss(line);
+    std::string cell;
+    std::getline(ss, cell, ',');
+    if (std::stod(cell) + 1e-6 < t_nav) continue;
+    for (int i = 1; i <= 9; ++i) std::getline(ss, cell, ',');
+    yaw_truth = std::stod(cell);
+    break;
+  }
+  const double d = std::remainder(yaw_nav - yaw_truth, 360.0);
+  EXPECT_LT(std::abs(d), 2.0) << "nav yaw " << yaw_nav << " truth " << yaw_truth;
 }
 
 TEST(Replay, BadInputIsAUsageOrRuntimeErrorWithAMessage) {
