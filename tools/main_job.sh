@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # The main job on the bundled default: simulate the default 30-minute UAV
-# flight (seed 7; generated, not stored), replay it through the INS/EKF with
-# the GM and the AR sensor-error model and print the navigation summaries;
-# then the real drive in ../shared/ when it is present.
+# flight and a 2-hour bench session of the same unit (seed 7; generated, not
+# stored), calibrate the unit on the bench (wavelet denoiser, GM, Burg AR(3),
+# Allan), record the flight as raw HAL traffic and read it back through the
+# HAL and the drivers, then replay it through the INS/EKF with the GM and the
+# AR sensor-error model, with GPS and with 30-s GPS outages, and print the
+# navigation summaries. Then the real drive in ../shared/ when present.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SINU=build/release/firmware/sinu
@@ -10,13 +13,31 @@ SINU=build/release/firmware/sinu
 out=build/main_job
 mkdir -p "$out"
 [ -f "$out/flight/imu.csv" ] || "$SINU" simulate flight --out "$out/flight" --seed 7 --hidden-out "$out/flight.hidden.json"
+[ -f "$out/bench/imu.csv" ] || "$SINU" simulate static --out "$out/bench" --seed 7 --hours 2 --hidden-out "$out/bench.hidden.json"
+[ -f "$out/calib.json" ] || "$SINU" calibrate --in "$out/bench" --out "$out/calib.json" --report "$out/calibration" --quiet
 # Record it as raw HAL traffic (emulated ICM-20948 registers + NMEA bytes), then
 # read the recording back through the HAL replay back ends and the drivers.
 "$SINU" convert "$out/flight" "$out/flight.raw"
 rm -rf "$out/flight_hal" && "$SINU" convert "$out/flight.raw" "$out/flight_hal"
 cp "$out/flight/truth.csv" "$out/flight_hal/truth.csv"
+# accel_bias/gyro_bias: the unit's per-power-on bias (not in calib.json's zero-mean
+# models); gps_position_bias: the receiver's slowly varying error.
+t0=$(awk -F, 'NR==2 {print $1; exit}' "$out/flight/imu.csv")
+outages=$(awk -v t="$t0" 'BEGIN {printf "%.1f:30,%.1f:30,%.1f:30,%.1f:30", t+300, t+700, t+1100, t+1500}')
 for model in gm ar; do
-  "$SINU" replay --in "$out/flight_hal" --model "$model" --effects accel_bias,gyro_bias --gps-latency 0.045 --out "$out/replay_$model"
+  common=(--in "$out/flight_hal" --calib "$out/calib.json" --model "$model" --gps-latency 0.045
+          --effects accel_bias,gyro_bias,gps_position_bias)
+  "$SINU" replay "${common[@]}" --out "$out/replay_$model"
+  "$SINU" replay "${common[@]}" --outage "$outages" --out "$out/outages_$model"
+done
+# The report: GM versus AR on the same flight (the paper's comparison).
+field() { sed -n "s/^  \"$2\": \([-0-9.e+]*\),*$/\1/p" "$1/summary.json" | head -1; }
+rmse() { sed -n "/\"rmse\"/,/}/s/^    \"$2\": \([-0-9.e+]*\),*$/\1/p" "$1/summary.json" | head -1; }
+echo "report: GM versus Burg AR(3), calibrated on the bench session ($out/calib.json; $out/calibration/report.md)"
+printf '  %-5s %-26s %-26s %s\n' model "pos_h RMSE with GPS [m]" "att RMSE with GPS [deg]" "30-s outages: max drift RMS [m]"
+for model in gm ar; do
+  printf '  %-5s %-26.3f %-26.3f %.2f\n' "$model" "$(rmse "$out/replay_$model" pos_h_m)" "$(rmse "$out/replay_$model" att_deg)" \
+    "$(field "$out/outages_$model" outage_max_drift_h_rms_m)"
 done
 drive=../shared/data/real/drive_0708
 if [ -d "$drive" ]; then
