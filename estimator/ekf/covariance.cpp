@@ -13,39 +13,42 @@ void mirror_upper(StateMat& P) {
 
 void propagate_covariance(StateMat& P, const StateMat& Phi, const StateVec& q_diag) {
   // Phi = I + F dt is sparse (nav rows, companion blocks, identity elsewhere):
-  // gather each row's non-zeros once, then A = Phi P and the upper triangle of
-  // A Phi^T cost nnz(Phi) * n instead of n^3.
+  // gather each row's non-zeros once, then
+  //   B = P Phi^T   column by column: B(:, i) = sum_k Phi(i, k) P(:, k)
+  //   P' = Phi B    upper triangle:   P'(i, j) = sum_k Phi(i, k) B(k, j)
+  // cost nnz(Phi) * n each instead of n^3; every access is down a column.
+  // Only the first nnz[r] entries of each row are ever read: no need to clear.
   const Eigen::Index n = P.rows();
-  // Only the first nnz[r] entries of each row are ever read: no need to clear
-  // 50 KB per call.
   std::array<std::array<Eigen::Index, kMaxStates>, kMaxStates> col;
   std::array<std::array<double, kMaxStates>, kMaxStates> val;
   std::array<Eigen::Index, kMaxStates> nnz{};
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const auto r = static_cast<std::size_t>(i);
-    for (Eigen::Index k = 0; k < n; ++k) {
-      if (Phi(i, k) == 0.0) continue;
+  for (Eigen::Index k = 0; k < n; ++k) {  // down the columns of Phi (its storage order)
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double v = Phi(i, k);
+      if (v == 0.0) continue;
+      const auto r = static_cast<std::size_t>(i);
       const auto c = static_cast<std::size_t>(nnz[r]++);
       col[r][c] = k;
-      val[r][c] = Phi(i, k);
+      val[r][c] = v;
     }
   }
-  StateMat A(n, n);
+  StateMat B(n, n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const auto r = static_cast<std::size_t>(i);
-    A.row(i).setZero();
-    for (Eigen::Index c = 0; c < nnz[r]; ++c) {
+    B.col(i) = val[r][0] * P.col(col[r][0]);
+    for (Eigen::Index c = 1; c < nnz[r]; ++c) {
       const auto cc = static_cast<std::size_t>(c);
-      A.row(i) += val[r][cc] * P.col(col[r][cc]).transpose();  // P symmetric: contiguous column
+      B.col(i) += val[r][cc] * P.col(col[r][cc]);
     }
   }
   for (Eigen::Index j = 0; j < n; ++j) {
-    const auto r = static_cast<std::size_t>(j);
+    const double* b = B.col(j).data();
     for (Eigen::Index i = 0; i <= j; ++i) {
+      const auto r = static_cast<std::size_t>(i);
       double sum = 0.0;
       for (Eigen::Index c = 0; c < nnz[r]; ++c) {
         const auto cc = static_cast<std::size_t>(c);
-        sum += A(i, col[r][cc]) * val[r][cc];
+        sum += val[r][cc] * b[col[r][cc]];
       }
       P(i, j) = sum;
     }

@@ -23,6 +23,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   have_prev_ = false;
   have_raw_ = false;
   mag_started_ = false;
+  predict_.clear();
   counters_ = {};
   nav_ = {};
   filter_.init(StateLayout::make(cfg.noise.order(), cfg.effects), cfg.noise, cfg.tuning, cfg.initial);
@@ -120,7 +121,8 @@ void Navigator::process(const ImuSample& s) {
   in.specific_force_n_m_s2 = f_n;
   in.temp_delta_degC = s.has_temp ? s.temp_degC - filter_.reference_temperature() : 0.0;
   in.dt_s = dt;
-  filter_.predict(in);
+  predict_.add(in);
+  if (predict_.pending_s() >= cfg_.covariance_period_s - 1e-9) predict_.flush(filter_);
 
   fuse_due_gnss(s.t_s, dt, r1);
   fuse_magnetometer(s);
@@ -199,6 +201,7 @@ void Navigator::reset_to_gnss(const GnssObservation& z, double dt_back) {
 }
 
 bool Navigator::fuse(AidingSource src, const Measurement& m, double t_meas) {
+  predict_.flush(filter_);  // P to the time of this update
   InnovationRecord rec;
   rec.t_s = t_meas;
   rec.source = src;
@@ -216,6 +219,7 @@ bool Navigator::fuse(AidingSource src, const Measurement& m, double t_meas) {
 
 void Navigator::emit() {
   if (!observer_) return;
+  // P is the last prediction's: at most covariance_period_s old.
   out_.nav = nav_;
   const StateLayout& L = filter_.layout();
   out_.P_nav = filter_.P().block(L.pos.start, L.pos.start, kNavStates, kNavStates);

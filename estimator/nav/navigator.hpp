@@ -15,6 +15,7 @@
 #include "estimator/ekf/aiding/gnss_observation.hpp"
 #include "estimator/ekf/error_state_filter.hpp"
 #include "estimator/ekf/measurement_update.hpp"
+#include "estimator/ekf/predict_accumulator.hpp"
 #include "estimator/prefilter/imu_prefilter.hpp"
 #include "estimator/util/ring_buffer.hpp"
 
@@ -45,12 +46,13 @@ struct NavigatorConfig {
   double mag_sigma_uT = 1.0;
   double mag_period_s = 0.1;          // fuse at most this often (10 Hz)
   double reset_after_rejected_s = 5.0;  // position rejected this long: fuse ungated / reset (as PX4 resets)
+  double covariance_period_s = 0.1;  // covariance prediction at most this far apart (0: every sample)
   double max_imu_gap_s = 0.5;        // longer gaps are counted (and bridged)
 };
 
 struct NavOutput {
   NavState nav;
-  Eigen::Matrix<double, 9, 9> P_nav;             // pos, vel, att block
+  Eigen::Matrix<double, 9, 9> P_nav;  // pos, vel, att block, as of the last covariance prediction (<= covariance_period_s old)
   std::array<double, kSensorAxes> sensor_error{}, sensor_error_sigma{};
 };
 
@@ -118,6 +120,7 @@ class Navigator {
   double last_raw_t_s_ = 0.0;
   Eigen::Vector3d accel_n_ = Eigen::Vector3d::Zero();
   StateVec dx_;
+  PredictAccumulator predict_;
   double last_position_accepted_t_ = 0.0;
   NavOutput out_;
   NavCounters counters_;
