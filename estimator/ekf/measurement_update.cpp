@@ -15,8 +15,15 @@ UpdateResult fuse_measurement(StateMat& P, StateVec& dx, const Measurement& m) {
   dx.setZero(n);
 
   using PHt_t = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxStates, kMaxMeasurementRows>;
-  PHt_t PHt(n, rows);
-  PHt.noalias() = P * m.H.transpose();
+  // U = P H^T from H's non-zero entries only (a few per row: position, attitude,
+  // the aiding source's own states): nnz(H) column axpys instead of n^2 m.
+  PHt_t PHt = PHt_t::Zero(n, rows);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    for (Eigen::Index row = 0; row < rows; ++row) {
+      const double h = m.H(row, k);
+      if (h != 0.0) PHt.col(row) += h * P.col(k);
+    }
+  }
   MeasMat S(rows, rows);
   S.noalias() = m.H * PHt;
   S += m.R;

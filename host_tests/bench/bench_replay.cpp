@@ -1,0 +1,87 @@
+// sinu replay throughput, end to end (issue 6): a simulated 50-minute 40 Hz
+// flight read from its dataset folder (imu.csv, gps.nmea, truth.csv), the
+// calibration's wavelet denoiser, INS/EKF, nav.csv / innovations.csv /
+// summary.json written. The calibration comes from a 1-hour bench session of
+// the same unit, as a user would make it. Target: AR(3) in < 2 s on one core.
+// items_per_second = IMU samples per second.
+#include <benchmark/benchmark.h>
+
+#include "firmware/calibration/calib_json.hpp"
+#include "firmware/calibration/calibration_run.hpp"
+#include "firmware/replay/replay_runner.hpp"
+#include "firmware/sim/simulation.hpp"
+#include "host_tests/support/temp_dir.hpp"
+
+namespace {
+
+struct Flight {
+  sinu::test::TempDir dir;
+  std::string dataset, calib;
+  Flight() {
+    sinu::sim::SimOptions o;
+    o.seed = 11;
+    sinu::sim::SimResult r;
+    sinu::io::Diagnostic err;
+    o.mode = sinu::sim::SimMode::Flight;
+    o.duration_s = 3000.0;
+    o.out_dir = dataset = (dir.path() / "flight").string();
+    sinu::sim::run_simulation(o, r, err);
+    o.mode = sinu::sim::SimMode::Static;
+    o.duration_s = 3600.0;
+    o.out_dir = (dir.path() / "bench").string();
+    sinu::sim::run_simulation(o, r, err);
+    sinu::calib::StaticSession session;
+    sinu::calib::load_static_session(o.out_dir, session, err);
+    sinu::calib::CalibrationRun run;
+    std::string why;
+    sinu::calib::make_wavelet_denoiser("db4", 3, run.denoiser, why);
+    run.sessions.push_back(sinu::calib::calibrate_session(session, run.denoiser, sinu::calib::ModelChoice{}));
+    calib = (dir.path() / "calib.json").string();
+    sinu::calib::write_calib_json(run, calib, why);
+  }
+};
+
+const Flight& flight() {
+  static const Flight f;
+  return f;
+}
+
+void replay(benchmark::State& state, sinu::est::NoiseModelKind kind, bool full) {
+  const Flight& f = flight();
+  sinu::replay::ReplayOptions opt;
+  opt.in_dir = f.dataset;
+  opt.calib_path = f.calib;
+  opt.out_dir = (f.dir.path() / "out").string();
+  opt.calib.kind = kind;
+  opt.gps_latency_s = 0.045;
+  opt.quiet = true;
+  opt.use_mag = full;
+  if (full) {
+    for (const auto e : {sinu::est::Effect::AccelBias, sinu::est::Effect::GyroBias, sinu::est::Effect::GpsPositionBias}) {
+      opt.effects.add(e);
+    }
+  }
+  std::uint64_t samples = 0;
+  for (auto _ : state) {
+    sinu::replay::ReplayTotals totals;
+    std::string error;
+    if (!sinu::replay::run_replay(opt, totals, error)) state.SkipWithError(error.c_str());
+    samples += totals.imu_samples;
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(samples));
+}
+
+// GM1: 15 states; Burg AR(3): 27 states (the issue's configuration).
+void BM_Replay50minGm(benchmark::State& s) { replay(s, sinu::est::NoiseModelKind::GaussMarkov, false); }
+void BM_Replay50minAr3(benchmark::State& s) { replay(s, sinu::est::NoiseModelKind::AutoRegressive, false); }
+// + accel_bias, gyro_bias, gps_position_bias and the magnetometer (Earth field): 27 and 39 states.
+void BM_Replay50minGmFull(benchmark::State& s) { replay(s, sinu::est::NoiseModelKind::GaussMarkov, true); }
+void BM_Replay50minAr3Full(benchmark::State& s) { replay(s, sinu::est::NoiseModelKind::AutoRegressive, true); }
+
+}  // namespace
+
+BENCHMARK(BM_Replay50minGm)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(BM_Replay50minAr3)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(BM_Replay50minGmFull)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(BM_Replay50minAr3Full)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_MAIN();
