@@ -212,7 +212,10 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
     cfg.alignment.mag_heading = true;
     cfg.alignment.mag_declination_rad = opt.mag_declination_deg * kDegToRad;
   }
-  if (opt.use_mag && dataset_has_mag(paths.imu())) cfg.effects.add(est::Effect::MagEarthField);
+  if (opt.use_mag && dataset_has_mag(paths.imu())) {  // the 3-axis model needs both (PX4 EKF2 likewise)
+    cfg.effects.add(est::Effect::MagEarthField);
+    cfg.effects.add(est::Effect::MagHardIron);
+  }
   cfg.gate_sigma = opt.gate_sigma;
   cfg.gps_latency_s = opt.gps_latency_s;
   cfg.lever_arm_b_m = opt.lever_arm_b_m;
