@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
   sinu::app::add_record_command(app, action);
   sinu::app::add_convert_command(app, action);
   sinu::app::add_fly_command(app, action);
-  sinu::app::add_pending_commands(app, action);
+  sinu::app::add_diagnose_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

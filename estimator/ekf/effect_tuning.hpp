@@ -23,11 +23,12 @@ struct EffectTuning {
       1.5,     // gps_position_bias [m] (overridden per axis by gps_bias_sigma_ned_m)
       5.0,     // mag_earth_field [uT] (set from the attitude at mag start-up)
       30.0,    // mag_hard_iron [uT] (a nearby motor or battery: tens of uT)
+      0.2,     // mag_soft_iron [-] (steel nearby: up to ~20 %)
   };
   // accel/gyro bias walks: the rate random walk of the simulator's default unit
   // gps_position_bias is a GM process (below), not a random walk; the Earth
   // field changes by ~0.1 uT over 100 km; hard iron by a motor current change.
-  std::array<double, kEffectCount> random_walk = {1e-6, 1e-6, 0.0, 1e-4, 1e-7, 1e-8, 2e-5, 2e-6, 0.0, 1e-3, 1e-2};
+  std::array<double, kEffectCount> random_walk = {1e-6, 1e-6, 0.0, 1e-4, 1e-7, 1e-8, 2e-5, 2e-6, 0.0, 1e-3, 1e-2, 0.0};
   // gps_position_bias: a standalone code receiver's correlated error, typical
   // values (metre level, minutes); GST's sigma is split into this and white.
   Eigen::Vector3d gps_bias_sigma_ned_m{1.2, 1.2, 2.5};

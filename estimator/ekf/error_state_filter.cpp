@@ -39,6 +39,7 @@ void ErrorStateFilter::init(const StateLayout& layout, const SensorNoise& noise,
   gps_bias_ned_.setZero();
   mag_field_n_.setZero();
   mag_hard_iron_b_.setZero();
+  mag_soft_iron_.setZero();
   sensor_hat_ = StateVec::Zero(layout.sensor.size);
   ar_clock_s_ = 0.0;
 }
@@ -137,9 +138,16 @@ void ErrorStateFilter::predict(const PredictInput& in) {
   if (layout_.has(Effect::GpsPositionBias)) gps_bias_ned_ *= std::exp(-in.dt_s / tuning_.gps_bias_tau_s);
 }
 
+Eigen::Matrix3d ErrorStateFilter::mag_soft_iron() const {
+  const auto& d = mag_soft_iron_;
+  Eigen::Matrix3d S;
+  S << 1.0 + d(0), d(3), d(4), d(3), 1.0 + d(1), d(5), d(4), d(5), 1.0 + d(2);
+  return S;
+}
+
 void ErrorStateFilter::start_mag_field(const NavState& nav, const Eigen::Vector3d& mag_b_uT, double noise_sigma_uT) {
   const Eigen::Matrix3d C = nav.C_nb();
-  mag_field_n_ = C * (mag_b_uT - mag_hard_iron_b_);
+  mag_field_n_ = C * mag_soft_iron().inverse() * (mag_b_uT - mag_hard_iron_b_);
   if (!layout_.has(Effect::MagEarthField)) return;
   // F_hat = C_hat (m - h) with C_hat = (I - [phi x]) C: dF = F - F_hat = -[F x] phi
   // (+ C dh + noise), so P_FF = [F x] P_phi [F x]^T + ..., P_F,x = -[F x] P_phi,x.
@@ -185,6 +193,7 @@ void ErrorStateFilter::feedback(StateVec& dx, NavState& nav) {
   add3(Effect::GpsPositionBias, gps_bias_ned_);
   add3(Effect::MagEarthField, mag_field_n_);
   add3(Effect::MagHardIron, mag_hard_iron_b_);
+  if (L.has(Effect::MagSoftIron)) mag_soft_iron_ += dx.segment(L.of(Effect::MagSoftIron).start, 6);
   if (L.has(Effect::GpsLatency)) latency_s_ += dx(L.of(Effect::GpsLatency).start);
   dx.setZero();
 }
@@ -243,6 +252,7 @@ double ErrorStateFilter::effect(Effect e, Eigen::Index i) const {
     case Effect::GpsPositionBias: return gps_bias_ned_(i);
     case Effect::MagEarthField: return mag_field_n_(i);
     case Effect::MagHardIron: return mag_hard_iron_b_(i);
+    case Effect::MagSoftIron: return mag_soft_iron_(i);
   }
   return 0.0;
 }

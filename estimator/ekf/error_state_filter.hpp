@@ -60,6 +60,8 @@ class ErrorStateFilter {
   Eigen::Vector3d gps_position_bias_ned_m() const { return gps_bias_ned_; }
   Eigen::Vector3d mag_earth_field_n_uT() const { return mag_field_n_; }
   Eigen::Vector3d mag_hard_iron_b_uT() const { return mag_hard_iron_b_; }
+  /// Soft-iron matrix I + D (identity without the mag_soft_iron states).
+  Eigen::Matrix3d mag_soft_iron() const;
   const EffectTuning& tuning() const { return tuning_; }
 
   /// Starts the magnetometer model from one sample: F_n = C_nb (m_b - h_b),
@@ -93,6 +95,7 @@ class ErrorStateFilter {
   Eigen::Vector3d lever_arm_b_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d gps_bias_ned_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d mag_field_n_ = Eigen::Vector3d::Zero(), mag_hard_iron_b_ = Eigen::Vector3d::Zero();
+  Eigen::Matrix<double, 6, 1> mag_soft_iron_ = Eigen::Matrix<double, 6, 1>::Zero();  // D xx yy zz xy xz yz
   double latency_s_ = 0.0;
   double temp_ref_degC_ = 0.0;
 };

@@ -14,6 +14,14 @@ bool effect_from_name(const char* name, std::size_t length, Effect& out) {
   return false;
 }
 
+const char* effect_component_name(Effect e, Eigen::Index i) {
+  static constexpr const char* kXyz[] = {"x", "y", "z"};
+  static constexpr const char* kSymmetric[] = {"xx", "yy", "zz", "xy", "xz", "yz"};
+  const Eigen::Index dims = kEffectDims[static_cast<std::size_t>(e)];
+  if (i < 0 || i >= dims || dims == 1) return "";
+  return dims == 6 ? kSymmetric[i] : kXyz[i];
+}
+
 StateLayout StateLayout::make(Eigen::Index order, EffectSet effects) {
   StateLayout l;
   l.order = order < 1 ? 1 : (order > kMaxArOrder ? kMaxArOrder : order);

@@ -18,7 +18,6 @@ void add_replay_command(CLI::App& app, Action& action);
 void add_record_command(CLI::App& app, Action& action);
 void add_convert_command(CLI::App& app, Action& action);
 void add_fly_command(CLI::App& app, Action& action);
-/// Modes whose issues have not landed: they print which issue and exit 2.
-void add_pending_commands(CLI::App& app, Action& action);
+void add_diagnose_command(CLI::App& app, Action& action);
 
 }  // namespace sinu::app

@@ -7,7 +7,7 @@ namespace sinu::replay {
 
 namespace {
 // Effects of the shared vocabulary that the EKF does not model yet.
-constexpr const char* kVocabularyNotModelled[] = {"accel_misalign", "gyro_misalign", "mag_hard_iron", "mag_soft_iron",
+constexpr const char* kVocabularyNotModelled[] = {"accel_misalign", "gyro_misalign",
                                                   "gyro_g_sensitivity"};
 
 std::vector<std::string> split(const std::string& s, char sep) {

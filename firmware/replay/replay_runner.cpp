@@ -182,11 +182,11 @@ std::string nav_header(const est::StateLayout& layout) {
                   "sigma_att_n_deg,sigma_att_e_deg,sigma_att_d_deg,"
                   "err_ax,err_ay,err_az,err_gx,err_gy,err_gz,sigma_err_ax,sigma_err_ay,sigma_err_az,sigma_err_gx,"
                   "sigma_err_gy,sigma_err_gz";
-  static constexpr const char* kAxis[] = {"x", "y", "z"};
   for (std::size_t e = 0; e < est::kEffectCount; ++e) {
     if (!layout.has(static_cast<est::Effect>(e))) continue;
     for (Eigen::Index i = 0; i < est::kEffectDims[e]; ++i) {
-      const std::string name = std::string(est::kEffectNames[e]) + (est::kEffectDims[e] > 1 ? std::string("_") + kAxis[i] : "");
+      const std::string component = est::effect_component_name(static_cast<est::Effect>(e), i);
+      const std::string name = std::string(est::kEffectNames[e]) + (component.empty() ? "" : "_" + component);
       h += "," + name + ",sigma_" + name;
     }
   }

@@ -70,11 +70,10 @@ TEST(Cli, InspectSummarisesAValidDataset) {
   EXPECT_NE(r.out.find("\"corrupt\": 1"), std::string::npos) << r.out;
 }
 
-TEST(Cli, PendingModesSayWhichIssueAndExitTwo) {
-  // issue 7 made fly real; diagnose (issue 6) is still pending on this branch
+TEST(Cli, DiagnoseWithoutItsRequiredOptionsIsAUsageError) {
   const auto r = run_sinu({"diagnose"});
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("not available yet"), std::string::npos);
+  EXPECT_NE(r.err.find("--in"), std::string::npos) << r.err;
   EXPECT_TRUE(r.out.empty()) << "never made-up output";
 }
 

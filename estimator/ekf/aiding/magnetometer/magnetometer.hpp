@@ -1,7 +1,9 @@
 #pragma once
 // Magnetometer aiding, three axes (PX4 EKF2's "3-axis" fusion): the body
-// field is the Earth field (a NED state) rotated into the body plus the hard
-// iron (a body state):  m_b = C_bn F_n + h_b + noise  [uT].
+// field is the Earth field (a NED state) rotated into the body, through the
+// soft iron S = I + D (optional states), plus the hard iron (a body state):
+//   m_b = S C_bn F_n + h_b + noise  [uT]   (below: S = I; with D, H_att and
+//   H_field are premultiplied by S and H_D = -d(S u)/dD, u = C_bn F).
 // y = h(x_hat) - z. With phi (C_nb_hat = (I - [phi x]) C_nb), dF = F - F_hat,
 // dh = h - h_hat:  y = -C_bn_hat [F_hat x] phi - C_bn_hat dF - dh, so
 //   H_att = -C_bn [F x],  H_field = -C_bn,  H_hard_iron = -I.

@@ -1,0 +1,60 @@
+#pragma once
+// `sinu diagnose`: compare the model with the measurements, show where it
+// fails, and name the missing physical effect.
+//
+// 1. Replay the data with the current model (baseline) and score it: per
+//    aiding source and flight phase, the NIS of the innovations against the
+//    filter's own sigmas (1 per component when the model is right), their
+//    mean (a bias) and the rejections.
+// 2. For each candidate effect in the vocabulary the EKF can estimate, replay
+//    again with its states added; score the innovations' likelihood. An effect
+//    that is really in the data makes the filter predict its measurements
+//    better: the negative log-likelihood falls by far more than the BIC
+//    penalty of its extra states, and its estimate is many sigmas from zero.
+// 3. Keep the best such effect, repeat (greedy) for a few rounds, and report
+//    the sequence with the error before and after.
+#include <string>
+#include <vector>
+
+#include "estimator/ekf/state_layout.hpp"
+#include "firmware/diagnose/innovation_stats.hpp"
+#include "firmware/replay/replay_options.hpp"
+
+namespace sinu::diag {
+
+struct DiagnoseOptions {
+  replay::ReplayOptions replay;  // in_dir, calib, model, baseline effects; out_dir = the report folder
+  est::EffectSet candidates;     // tried one at a time
+  int rounds = 2;
+  double min_significance = 3.0;  // |estimate| / sigma of at least one component
+};
+
+struct CandidateResult {
+  est::Effect effect{};
+  double nll_gain = 0.0;     // baseline NLL - NLL with the effect
+  double penalty = 0.0;      // BIC: 0.5 k ln(N)
+  double significance = 0.0; // max |estimate - assumed value| / sigma
+  std::vector<double> estimate, sigma;
+  InnovationStats stats;
+  double rmse_pos_h_m = -1.0, rmse_att_deg = -1.0;  // against truth.csv (-1: none)
+  bool explains(double min_significance) const { return nll_gain > penalty && significance >= min_significance; }
+};
+
+struct Round {
+  est::EffectSet model;             // the effects in the model this round starts from
+  InnovationStats stats;            // its score
+  double rmse_pos_h_m = -1.0, rmse_att_deg = -1.0;
+  std::vector<CandidateResult> candidates;  // best first
+  bool found = false;               // candidates.front() explains the data
+};
+
+struct Diagnosis {
+  std::vector<Round> rounds;
+  std::vector<est::Effect> missing;  // in the order found
+};
+
+/// Runs the replays under options.replay.out_dir and writes report.md and
+/// diagnosis.json there. False with a one-line `error` on bad input.
+bool run_diagnosis(const DiagnoseOptions& options, Diagnosis& out, std::string& error);
+
+}  // namespace sinu::diag
