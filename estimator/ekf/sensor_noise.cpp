@@ -11,6 +11,13 @@ Eigen::Index SensorNoise::order() const {
   return p;
 }
 
+void SensorNoise::scale_coloured(double factor) {
+  for (GaussMarkovAxis& g : gm) g.variance *= factor;
+  for (ArAxis& a : ar) a.variance *= factor;
+  accel_bias_walk *= std::sqrt(factor);
+  gyro_bias_walk *= std::sqrt(factor);
+}
+
 SensorNoise SensorNoise::defaults(NoiseModelKind kind) {
   constexpr double kAccelSigma = 0.05, kGyroSigma = 5e-3, kTau = 300.0, kPeriod = 0.025;
   SensorNoise n;

@@ -49,6 +49,10 @@ struct SensorNoise {
   /// gyro GM sigma 5e-3 rad/s tau 300 s, N 2.6e-4 rad/s/rtHz.
   /// The AR default is the exact AR(1) equivalent of that GM at 40 Hz.
   static SensorNoise defaults(NoiseModelKind kind);
+
+  /// Scales every coloured-error variance (GM variances, AR driving
+  /// variances, bias-state walks squared) by `factor`; white noise unchanged.
+  void scale_coloured(double factor);
 };
 
 }  // namespace sinu::est

@@ -58,7 +58,45 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
   fs::create_directories(o.replay.out_dir, ec);
   est::EffectSet model = o.replay.effects;
   RunScore current;
-  if (!replay_and_score(o.replay, model, (fs::path(o.replay.out_dir) / "baseline").string(), current, error)) return false;
+  const std::string baseline_dir = (fs::path(o.replay.out_dir) / "baseline").string();
+  DiagnoseOptions tuned = o;
+  if (!replay_and_score(tuned.replay, model, baseline_dir, current, error)) return false;
+  out.mag_sigma_given_uT = out.mag_sigma_uT = o.replay.mag_sigma_uT;
+  out.vel_sigma_given_m_s = out.vel_sigma_m_s = o.replay.sigma.velocity_sigma_m_s;
+  // The magnetometer's and the GNSS velocity's sigmas are guesses (GST reports
+  // only the position's). A too-generous sigma hides effects: when a source's
+  // NIS per component is below 0.5, scale its sigma by sqrt(NIS) (the factor
+  // for white noise) so it is 1. Never upwards: a NIS above 1 is what a
+  // missing effect looks like, and inflating the sigma would hide it.
+  const double mag_nis = current.stats.source[2].nis(), vel_nis = current.stats.source[1].nis();
+  const bool tune_mag = current.stats.source[2].count > 100 && mag_nis < 0.5;
+  const bool tune_vel = current.stats.source[1].count > 100 && vel_nis < 0.5;
+  if (o.tune_mag_sigma && (tune_mag || tune_vel)) {
+    if (tune_mag) tuned.replay.mag_sigma_uT = out.mag_sigma_uT = std::max(0.05, o.replay.mag_sigma_uT * std::sqrt(mag_nis));
+    if (tune_vel) {
+      tuned.replay.sigma.velocity_sigma_m_s = out.vel_sigma_m_s =
+          std::max(0.01, o.replay.sigma.velocity_sigma_m_s * std::sqrt(vel_nis));
+    }
+    if (!replay_and_score(tuned.replay, model, baseline_dir, current, error)) return false;
+  }
+  // Without a calibration the built-in sensor model is a generic guess, usually
+  // far too loose for a given unit: a loose model hides effects. Choose the
+  // scale of its coloured-error variances by maximum likelihood of the
+  // innovations (the same criterion that then judges the candidates).
+  out.process_noise_scale = 1.0;
+  if (o.tune_process_noise && o.replay.calib_path.empty()) {
+    for (const double scale : {0.3, 0.1, 0.03, 0.01}) {
+      DiagnoseOptions trial = tuned;
+      trial.replay.process_noise_scale = scale;
+      RunScore score;
+      const std::string dir = (fs::path(o.replay.out_dir) / "noise_scale" / std::to_string(scale)).string();
+      if (!replay_and_score(trial.replay, model, dir, score, error)) return false;
+      if (score.stats.total_nll() >= current.stats.total_nll()) break;  // the likelihood has peaked
+      current = std::move(score);
+      tuned = trial;
+      out.process_noise_scale = scale;
+    }
+  }
   for (int r = 0; r < o.rounds; ++r) {
     Round round;
     round.model = model;
@@ -75,7 +113,7 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
       const std::string dir =
           (fs::path(o.replay.out_dir) / ("round" + std::to_string(r + 1)) / est::kEffectNames[e]).string();
       RunScore score;
-      if (!replay_and_score(o.replay, trial, dir, score, error)) return false;
+      if (!replay_and_score(tuned.replay, trial, dir, score, error)) return false;
       CandidateResult c;
       c.effect = effect;
       c.nll_gain = current.stats.total_nll() - score.stats.total_nll();
@@ -127,7 +165,7 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
   last.rmse_pos_h_m = current.rmse_pos_h_m;
   last.rmse_att_deg = current.rmse_att_deg;
   if (out.rounds.empty() || out.rounds.back().found) out.rounds.push_back(last);
-  return write_diagnosis(o, out, error);
+  return write_diagnosis(tuned, out, error);
 }
 
 }  // namespace sinu::diag

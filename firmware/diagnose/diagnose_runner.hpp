@@ -27,6 +27,8 @@ struct DiagnoseOptions {
   est::EffectSet candidates;     // tried one at a time
   int rounds = 2;
   double min_significance = 3.0;  // |estimate| / sigma of at least one component
+  bool tune_mag_sigma = true;     // scale the magnetometer sigma so its NIS is 1 before comparing
+  bool tune_process_noise = true; // without calib.json: pick the default model's scale by likelihood
 };
 
 struct CandidateResult {
@@ -49,6 +51,10 @@ struct Round {
 };
 
 struct Diagnosis {
+  double mag_sigma_uT = 0.0;         // the magnetometer sigma used (tuned from the baseline's NIS)
+  double mag_sigma_given_uT = 0.0;   // as configured
+  double vel_sigma_m_s = 0.0, vel_sigma_given_m_s = 0.0;  // GNSS velocity sigma, likewise
+  double process_noise_scale = 1.0;  // chosen by likelihood (1 with a calib.json)
   std::vector<Round> rounds;
   std::vector<est::Effect> missing;  // in the order found
 };

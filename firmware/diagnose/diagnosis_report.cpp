@@ -82,6 +82,18 @@ std::string diagnosis_summary(const DiagnoseOptions& o, const Diagnosis& d) {
   std::string out = "diagnose " + o.replay.in_dir + "\n";
   if (d.rounds.empty()) return out;
   const Round& base = d.rounds.front();
+  if (d.mag_sigma_uT != d.mag_sigma_given_uT) {
+    out += "  magnetometer sigma tuned from " + fmt("%.2f", d.mag_sigma_given_uT) + " to " + fmt("%.2f", d.mag_sigma_uT) +
+           " uT (its NIS per component was " + fmt("%.2f", std::pow(d.mag_sigma_uT / d.mag_sigma_given_uT, 2)) + ")\n";
+  }
+  if (d.vel_sigma_m_s != d.vel_sigma_given_m_s) {
+    out += "  GNSS velocity sigma tuned from " + fmt("%.2f", d.vel_sigma_given_m_s) + " to " + fmt("%.3f", d.vel_sigma_m_s) +
+           " m/s (its NIS per component was " + fmt("%.2f", std::pow(d.vel_sigma_m_s / d.vel_sigma_given_m_s, 2)) + ")\n";
+  }
+  if (d.process_noise_scale != 1.0) {
+    out += "  no calib.json: the built-in sensor model's coloured-error variances scaled by " +
+           fmt("%.2g", d.process_noise_scale) + " (maximum likelihood of the innovations)\n";
+  }
   out += "  baseline model (" + effect_list(base.model) + "): fits worst in " + worst_cell(base.stats) + "\n";
   if (d.missing.empty()) {
     out += "  no candidate effect explains the misfit (see report.md for each candidate's score)\n";

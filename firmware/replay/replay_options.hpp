@@ -30,6 +30,7 @@ struct ReplayOptions {
   GnssSigmaConfig sigma;
   std::string denoise = "auto";  // auto: calib.json's denoiser (none without calib); none; WAVELET:LEVELS
   bool quiet = false;
+  double process_noise_scale = 1.0;  // times the sensor model's coloured-error variances
   double mag_sigma_uT = 1.0;  // magnetometer noise + disturbance, 1 sigma per axis
   bool use_mag = true;
   double mag_declination_deg = NAN;  // set: align with the magnetometer at rest  // fuse the magnetometer when imu.csv has one (adds mag_earth_field)

@@ -201,6 +201,7 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
   cfg.noise = est::SensorNoise::defaults(opt.calib.kind);
   DenoiserSpec denoiser;
   if (!opt.calib_path.empty() && !load_calib(opt.calib_path, opt.calib, cfg.noise, denoiser, error)) return false;
+  cfg.noise.scale_coloured(opt.process_noise_scale);
   if (opt.denoise != "auto" && !parse_denoiser(opt.denoise, denoiser, error)) return false;
   std::unique_ptr<est::ImuPrefilter> prefilter;
   if (denoiser.wavelet) {

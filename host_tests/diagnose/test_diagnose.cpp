@@ -42,6 +42,20 @@ TEST(Diagnose, NamesAHiddenGpsLatencyAndTheErrorFalls) {
   EXPECT_LT(d["after"]["rmse_pos_h_m"].get<double>(), 0.5 * d["before"]["rmse_pos_h_m"].get<double>());
 }
 
+TEST(Diagnose, NamesAHiddenLeverArm) {
+  TempDir dir;
+  const auto d = diagnose(dir, R"({"lever_arm": [0.9, -0.5, -0.6]})");
+  ASSERT_GE(d["missing_effects"].size(), 1u) << d.dump(1);
+  EXPECT_EQ(d["missing_effects"][0], "lever_arm");
+  const auto& c = first_candidate(d);
+  const double truth[3] = {0.9, -0.5, -0.6};
+  for (std::size_t i = 0; i < 3; ++i) {
+    // Within 3 sigma of the truth (sigmas 0.04-0.15 m: the lever arm shows only through rotations).
+    EXPECT_NEAR(c["estimate"][i].get<double>(), truth[i], 3.0 * c["sigma"][i].get<double>()) << "axis " << i;
+  }
+  EXPECT_LT(d["after"]["rmse_pos_h_m"].get<double>(), d["before"]["rmse_pos_h_m"].get<double>());
+}
+
 TEST(Diagnose, NamesAHiddenSoftIronAndTheHeadingRecovers) {
   TempDir dir;
   const auto d = diagnose(dir, R"({"mag_soft_iron": [[1.1, 0.03, 0], [0.03, 0.92, 0.02], [0, 0.02, 1.05]]})");
