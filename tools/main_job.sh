@@ -5,7 +5,9 @@
 # Allan), record the flight as raw HAL traffic and read it back through the
 # HAL and the drivers, then replay it through the INS/EKF with the GM and the
 # AR sensor-error model, with GPS and with 30-s GPS outages, and print the
-# navigation summaries. Then the real drive in ../shared/ when present.
+# navigation summaries and a GM-versus-AR report; then ask `sinu diagnose`
+# whether the data show a physical effect the model lacks. Then the real
+# drive in ../shared/ when present.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SINU=build/release/firmware/sinu
@@ -39,6 +41,9 @@ for model in gm ar; do
   printf '  %-5s %-26.3f %-26.3f %.2f\n' "$model" "$(rmse "$out/replay_$model" pos_h_m)" "$(rmse "$out/replay_$model" att_deg)" \
     "$(field "$out/outages_$model" outage_max_drift_h_rms_m)"
 done
+# Model against measurements: does the replayed flight show an effect the model lacks?
+"$SINU" diagnose --in "$out/flight_hal" --calib "$out/calib.json" --model gm --gps-latency 0.045 --rounds 1 \
+  --out "$out/diagnose"
 drive=../shared/data/real/drive_0708
 if [ -d "$drive" ]; then
   "$SINU" inspect dataset "$drive"
