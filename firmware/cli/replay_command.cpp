@@ -106,6 +106,10 @@ void add_replay_command(CLI::App& app, Action& action) {
       ->capture_default_str();
   sub->add_option("--gate", c->opt.gate_sigma, "Innovation gate [sigma]")->capture_default_str();
   sub->add_option("--out", c->opt.out_dir, "Output folder")->required();
+  sub->add_option("--gps-vel-sigma", c->opt.sigma.velocity_sigma_m_s,
+                  "GNSS velocity noise per axis, 1 sigma [m/s] (NMEA carries none)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   sub->add_option("--mag-sigma", c->opt.mag_sigma_uT, "Magnetometer noise per axis, 1 sigma [uT]")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
