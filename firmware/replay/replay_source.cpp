@@ -16,7 +16,7 @@ std::unique_ptr<ReplaySource> open_replay_source(const std::string& in, const dr
     return dataset;
   }
   if (!std::filesystem::exists(in, ec)) {
-    error = in + ": no such dataset folder or raw recording";
+    error = in + ": no such dataset folder (imu.csv, gps.nmea, ...) or raw recording file";
     return nullptr;
   }
   auto recording = std::make_unique<RecordingSource>(imu);  // the reader checks the header
