@@ -3,11 +3,38 @@
 namespace sinu::replay {
 
 bool RecordingSource::open(const std::string& path, std::string& error) {
+  path_ = path;
   session_ = std::make_unique<hal::ReplaySession>();
   if (!session_->load(path, error)) return false;
   held_ = std::make_unique<est::RingBuffer<Held, kHeldSamples>>();
   fixes_ = std::make_unique<est::RingBuffer<drivers::GpsFix, kHeldFixes>>();
   return true;
+}
+
+namespace {
+/// Stops the board loop at the first IMU sample.
+class FirstSample final : public board::BoardSink {
+ public:
+  void on_imu(const drivers::ImuSample& s) override {
+    if (!seen) has_mag = s.has_mag;
+    seen = true;
+    stop.store(true);
+  }
+  void on_sentence(hal::TimeNs, std::string_view) override {}
+  void on_fix(const drivers::GpsFix&) override {}
+  std::atomic<bool> stop{false};
+  bool seen = false, has_mag = false;
+};
+}  // namespace
+
+bool RecordingSource::first_sample_has_mag() {
+  hal::ReplaySession probe;
+  std::string error;
+  if (!probe.load(path_, error)) return false;
+  FirstSample first;
+  board::BoardLoop loop({probe.drdy(), probe.i2c(), probe.serial(), probe.clock()}, imu_config_);
+  loop.run(first, &first.stop);
+  return first.has_mag;
 }
 
 void RecordingSource::release_oldest() {

@@ -32,6 +32,8 @@ class RecordingSource final : public ReplaySource, private board::BoardSink {
   /// ends the replay there and is reported by note().
   bool open(const std::string& path, std::string& error);
   bool run(ReplayFeed& feed, std::string& error) override;
+  /// Runs the drivers over a second copy of the recording up to the first sample.
+  bool first_sample_has_mag() override;
   SourceCounters counters() const override { return counters_; }
   std::string note() const override;
 
@@ -45,6 +47,7 @@ class RecordingSource final : public ReplaySource, private board::BoardSink {
   void release_oldest();
 
   drivers::Icm20948Config imu_config_;
+  std::string path_;
   std::unique_ptr<hal::ReplaySession> session_;
   struct Held {
     est::ImuSample sample;

@@ -167,14 +167,6 @@ class ReplayObserver final : public est::NavObserver {
   double first_t_ = NAN;
 };
 
-/// True when the first complete imu.csv row carries a magnetometer sample.
-bool dataset_has_mag(const std::string& imu_path) {
-  io::CsvReader imu(io::kImuSchema);
-  io::CsvRow row;
-  if (!imu.open(imu_path) || imu.next(row) != io::ReadStatus::Row) return false;
-  return io::ImuRow{row}.has_mag();
-}
-
 std::string nav_header(const est::StateLayout& layout) {
   std::string h = "t,lat,lon,h,vn,ve,vd,roll,pitch,yaw,sigma_pn_m,sigma_pe_m,sigma_pd_m,sigma_vn,sigma_ve,sigma_vd,"
                   "sigma_att_n_deg,sigma_att_e_deg,sigma_att_d_deg,"
@@ -253,7 +245,9 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
     cfg.alignment.mag_heading = true;
     cfg.alignment.mag_declination_rad = opt.mag_declination_deg * kDegToRad;
   }
-  if (opt.use_mag && dataset_has_mag(paths.imu())) {  // the 3-axis model needs both (PX4 EKF2 likewise)
+  const std::unique_ptr<ReplaySource> source = open_replay_source(opt.in_dir, opt.imu, error);
+  if (!source) return false;
+  if (opt.use_mag && source->first_sample_has_mag()) {  // the 3-axis model needs both (PX4 EKF2 likewise)
     cfg.effects.add(est::Effect::MagEarthField);
     cfg.effects.add(est::Effect::MagHardIron);
   }
@@ -262,8 +256,6 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
   cfg.lever_arm_b_m = opt.lever_arm_b_m;
   cfg.horizon_s = std::max(0.3, opt.gps_latency_s + 0.25);
 
-  const std::unique_ptr<ReplaySource> source = open_replay_source(opt.in_dir, opt.imu, error);
-  if (!source) return false;
   const std::string truth_path = opt.truth_path.empty() ? source->default_truth() : opt.truth_path;
   io::CsvReader truth(io::kTruthSchema);
   const bool has_truth = !truth_path.empty();
