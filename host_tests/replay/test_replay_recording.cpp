@@ -133,7 +133,7 @@ TEST(ReplayRecordingSlowGps, OneHertzGpsGivesTheSameBitsToo) {
   EXPECT_EQ(sa.dump(), sb.dump());
 }
 
-// The real drive (100 Hz IMU, 1 Hz GPS from a real receiver): converted to a
+// The real drive (100 Hz IMU, 4 Hz GPS from a real receiver): converted to a
 // recording, replayed through the drivers, the same bits as its conversion back.
 TEST(ReplayRecordingRealDrive, SameBitsAsTheDatasetItConvertsTo) {
   SINU_REQUIRE_SHARED(drive, "data/real/drive_0708");
