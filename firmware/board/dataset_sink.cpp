@@ -6,7 +6,13 @@
 
 namespace sinu::board {
 
-DatasetSink::DatasetSink() { io::set_imu_formats(imu_); }
+DatasetSink::DatasetSink() {
+  // Lossless, so the dataset replays to the same bits as the recording it
+  // came from: t to the nanosecond (the HAL's resolution; hal::ns_to_s reads
+  // the same double), values in shortest round-trip form.
+  imu_.set_format(io::imu_col::t, {io::ColumnFormat::Style::Fixed, 9});
+  for (std::size_t c = io::imu_col::ax; c < io::imu_col::count; ++c) imu_.set_format(c, {io::ColumnFormat::Style::Shortest, 0});
+}
 
 bool DatasetSink::open(const std::string& dir) {
   std::error_code ec;

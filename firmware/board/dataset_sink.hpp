@@ -1,6 +1,7 @@
 #pragma once
 // BoardSink that writes a dataset folder: imu.csv rows and gps.nmea lines
-// (dataset-format.md). Sentences that arrived in one serial chunk share its
+// (dataset-format.md). imu.csv is lossless (t in ns, values in shortest
+// round-trip form). Sentences that arrived in one serial chunk share its
 // time; gps.nmea needs strictly increasing times, so each later one is
 // stamped 1 us after the previous (the file's resolution).
 #include <string>

@@ -1,12 +1,14 @@
-// sinu replay --in DATASET [--calib calib.json] --model gm|ar [--effects ...]
-//   [--gps-period S] [--outage START:DURATION,...] --out DIR
-// Runs a dataset through the INS/EKF; writes nav.csv, innovations.csv and
-// summary.json; prints the navigation summary.
+// sinu replay --in DATASET|RAW [--truth truth.csv] [--calib calib.json]
+//   --model gm|ar [--effects ...] [--gps-period S] [--outage START:DURATION,...] --out DIR
+// Runs a dataset folder, or a raw HAL recording through the drivers, through
+// the INS/EKF; writes nav.csv, innovations.csv and summary.json; prints the
+// navigation summary.
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "firmware/cli/board_options.hpp"
 #include "firmware/cli/command.hpp"
 #include "firmware/cli/exit_codes.hpp"
 #include "firmware/replay/replay_runner.hpp"
@@ -20,6 +22,7 @@ struct ReplayCliOptions {
   std::string model = "ar";
   std::string effects, outages;
   std::vector<double> lever_arm;
+  ImuOptions imu;  // for a raw recording: the driver settings it was recorded with
 };
 
 std::string fmt_num(double v) {
@@ -71,11 +74,16 @@ int run(ReplayCliOptions& c) {
     }
     c.opt.lever_arm_b_m = {c.lever_arm[0], c.lever_arm[1], c.lever_arm[2]};
   }
+  if (!c.imu.to_config(c.opt.imu, error)) {
+    std::fprintf(stderr, "sinu replay: %s\n", error.c_str());
+    return kExitUsage;
+  }
   replay::ReplayTotals totals;
   if (!replay::run_replay(c.opt, totals, error)) {
     std::fprintf(stderr, "sinu replay: %s\n", error.c_str());
     return kExitFailure;
   }
+  if (!totals.note.empty()) std::fprintf(stderr, "sinu replay: note: %s\n", totals.note.c_str());
   if (!c.opt.quiet) print_summary(c.opt.out_dir);
   return kExitOk;
 }
@@ -84,8 +92,13 @@ int run(ReplayCliOptions& c) {
 
 void add_replay_command(CLI::App& app, Action& action) {
   auto c = std::make_shared<ReplayCliOptions>();
-  CLI::App* sub = app.add_subcommand("replay", "Replay a dataset through the INS/EKF and write the navigation solution");
-  sub->add_option("--in", c->opt.in_dir, "Dataset folder (imu.csv, gps.nmea, truth.csv)")->required();
+  CLI::App* sub = app.add_subcommand(
+      "replay", "Replay a dataset or a raw recording through the INS/EKF and write the navigation solution");
+  sub->add_option("--in", c->opt.in_dir,
+                  "Dataset folder (imu.csv, gps.nmea, truth.csv), or a raw recording (sinu record, sinu convert) "
+                  "replayed through the HAL and drivers")
+      ->required();
+  sub->add_option("--truth", c->opt.truth_path, "truth.csv to compare with (default: the dataset folder's, if any)");
   sub->add_option("--calib", c->opt.calib_path,
                   "calib.json from `sinu calibrate`; omitted: built-in defaults (README, 'sinu replay')");
   sub->add_option("--model", c->model, "Sensor-error model: gm (GM1, 15 states) or ar (AR(p), 9+6p states)")
@@ -119,6 +132,7 @@ void add_replay_command(CLI::App& app, Action& action) {
   sub->add_flag("--no-mag", [c](std::int64_t) { c->opt.use_mag = false; },
                 "Do not fuse the magnetometer even when imu.csv has one");
   sub->add_flag("--quiet", c->opt.quiet, "Do not print the summary");
+  c->imu.add_to(*sub);
   sub->callback([&action, c] { action = [c] { return run(*c); }; });
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "drivers/imu/icm20948.hpp"
 #include "estimator/nav/navigator.hpp"
 #include "firmware/replay/calib_json.hpp"
 #include "firmware/replay/gnss_from_fix.hpp"
@@ -16,7 +17,9 @@ struct Outage {
 };
 
 struct ReplayOptions {
-  std::string in_dir;
+  std::string in_dir;       // dataset folder or raw recording file
+  std::string truth_path;   // truth.csv; empty: the dataset folder's, if any
+  drivers::Icm20948Config imu;  // driver settings for a raw recording (as `sinu convert`)
   std::string calib_path;   // empty: documented defaults (SensorNoise::defaults)
   std::string out_dir;
   CalibChoice calib;

@@ -8,11 +8,9 @@
 
 #include "estimator/ins/rotation.hpp"
 #include "estimator/prefilter/wavelet_prefilter.hpp"
-#include "firmware/dataset/dataset_paths.hpp"
-#include "firmware/dataset/imu_csv.hpp"
-#include "firmware/dataset/nmea_log.hpp"
 #include "firmware/dataset/truth_csv.hpp"
 #include "firmware/replay/nav_metrics.hpp"
+#include "firmware/replay/replay_source.hpp"
 #include "firmware/replay/text_sink.hpp"
 
 namespace sinu::replay {
@@ -169,14 +167,6 @@ class ReplayObserver final : public est::NavObserver {
   double first_t_ = NAN;
 };
 
-/// True when the first complete imu.csv row carries a magnetometer sample.
-bool dataset_has_mag(const std::string& imu_path) {
-  io::CsvReader imu(io::kImuSchema);
-  io::CsvRow row;
-  if (!imu.open(imu_path) || imu.next(row) != io::ReadStatus::Row) return false;
-  return io::ImuRow{row}.has_mag();
-}
-
 std::string nav_header(const est::StateLayout& layout) {
   std::string h = "t,lat,lon,h,vn,ve,vd,roll,pitch,yaw,sigma_pn_m,sigma_pe_m,sigma_pd_m,sigma_vn,sigma_ve,sigma_vd,"
                   "sigma_att_n_deg,sigma_att_e_deg,sigma_att_d_deg,"
@@ -193,10 +183,52 @@ std::string nav_header(const est::StateLayout& layout) {
   return h + "\n";
 }
 
+/// The one path from samples to the navigator, whichever the source: GPS
+/// epochs thinned by --gps-period and --outage, IMU samples as they come.
+class NavigatorFeed final : public ReplayFeed {
+ public:
+  NavigatorFeed(est::Navigator& nav, const ReplayOptions& opt) : nav_(nav), opt_(opt) {}
+
+  void on_fix(const drivers::GpsFix& f) override {
+    ++epochs;
+    est::GnssObservation z;
+    if (!gnss_from_fix(f, opt_.sigma, z)) return;
+    const double t_valid = z.arrival_s - opt_.gps_latency_s;
+    for (const Outage& o : opt_.outages) {
+      if (t_valid >= o.start_s && t_valid < o.start_s + o.duration_s) {
+        ++dropped_outage;
+        return;
+      }
+    }
+    // Slower GPS: keep an epoch once at least a period (less 0.05 s of arrival jitter) has passed.
+    if (opt_.gps_period_s > 0.0 && t_valid - last_used_t_ < opt_.gps_period_s - 0.05) {
+      ++dropped_period;
+      return;
+    }
+    last_used_t_ = t_valid;
+    ++used;
+    nav_.push_gnss(z);
+  }
+
+  void on_imu(const est::ImuSample& s) override {
+    nav_.push_imu(s);
+    if (std::isnan(t_first)) t_first = s.t_s;
+    t_last = s.t_s;
+    ++imu_samples;
+  }
+
+  std::uint64_t epochs = 0, used = 0, dropped_outage = 0, dropped_period = 0, imu_samples = 0;
+  double t_first = NAN, t_last = NAN;
+
+ private:
+  est::Navigator& nav_;
+  const ReplayOptions& opt_;
+  double last_used_t_ = -1e300;
+};
+
 }  // namespace
 
 bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& error) {
-  const io::DatasetPaths paths{opt.in_dir};
   est::NavigatorConfig cfg;
   cfg.noise = est::SensorNoise::defaults(opt.calib.kind);
   DenoiserSpec denoiser;
@@ -213,7 +245,9 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
     cfg.alignment.mag_heading = true;
     cfg.alignment.mag_declination_rad = opt.mag_declination_deg * kDegToRad;
   }
-  if (opt.use_mag && dataset_has_mag(paths.imu())) {  // the 3-axis model needs both (PX4 EKF2 likewise)
+  const std::unique_ptr<ReplaySource> source = open_replay_source(opt.in_dir, opt.imu, error);
+  if (!source) return false;
+  if (opt.use_mag && source->first_sample_has_mag()) {  // the 3-axis model needs both (PX4 EKF2 likewise)
     cfg.effects.add(est::Effect::MagEarthField);
     cfg.effects.add(est::Effect::MagHardIron);
   }
@@ -222,20 +256,10 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
   cfg.lever_arm_b_m = opt.lever_arm_b_m;
   cfg.horizon_s = std::max(0.3, opt.gps_latency_s + 0.25);
 
-  io::CsvReader imu(io::kImuSchema);
-  if (!imu.open(paths.imu())) {
-    error = imu.error().to_string();
-    return false;
-  }
-  io::GpsLogReader gps;
-  const bool has_gps = paths.has_gps();
-  if (has_gps && !gps.open(paths.gps())) {
-    error = gps.error().to_string();
-    return false;
-  }
+  const std::string truth_path = opt.truth_path.empty() ? source->default_truth() : opt.truth_path;
   io::CsvReader truth(io::kTruthSchema);
-  const bool has_truth = paths.has_truth();
-  if (has_truth && !truth.open(paths.truth())) {
+  const bool has_truth = !truth_path.empty();
+  if (has_truth && !truth.open(truth_path)) {
     error = truth.error().to_string();
     return false;
   }
@@ -257,71 +281,19 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
   nav_out.text(nav_header(navigator->filter().layout()));
   innov_out.text("t,source,component,innovation,sigma,test_ratio,accepted\n");
 
-  std::uint64_t epochs = 0, used = 0, dropped_outage = 0, dropped_period = 0, imu_incomplete = 0;
-  double last_used_t = -1e300;
-  drivers::GpsFix fix;
-  bool fix_pending = has_gps && gps.next(fix) == io::ReadStatus::Row;
-  auto push_fix = [&](const drivers::GpsFix& f) {
-    ++epochs;
-    est::GnssObservation z;
-    if (!gnss_from_fix(f, opt.sigma, z)) return;
-    const double t_valid = z.arrival_s - opt.gps_latency_s;
-    for (const Outage& o : opt.outages) {
-      if (t_valid >= o.start_s && t_valid < o.start_s + o.duration_s) {
-        ++dropped_outage;
-        return;
-      }
-    }
-    // Slower GPS: keep an epoch once at least a period (less 0.05 s of arrival jitter) has passed.
-    if (opt.gps_period_s > 0.0 && t_valid - last_used_t < opt.gps_period_s - 0.05) {
-      ++dropped_period;
-      return;
-    }
-    last_used_t = t_valid;
-    ++used;
-    navigator->push_gnss(z);
-  };
-
-  io::CsvRow row;
-  io::ReadStatus st;
-  double t_first = NAN, t_last = NAN;
-  while ((st = imu.next(row)) == io::ReadStatus::Row) {
-    const io::ImuRow r{row};
-    if (!r.has_accel() || !r.has_gyro()) {
-      ++imu_incomplete;
-      continue;
-    }
-    est::ImuSample s;
-    s.t_s = r.t_s();
-    const auto f = r.specific_force_b_m_s2();
-    const auto g = r.angular_rate_b_rad_s();
-    s.specific_force_b_m_s2 = {f[0], f[1], f[2]};
-    s.angular_rate_b_rad_s = {g[0], g[1], g[2]};
-    s.has_mag = r.has_mag();
-    if (s.has_mag) {
-      const auto m = r.mag_b_uT();
-      s.mag_b_uT = {m[0], m[1], m[2]};
-    }
-    s.has_temp = r.has_temp();
-    s.temp_degC = s.has_temp ? r.temp_degC() : 0.0;
-    while (fix_pending && fix.arrival_s <= s.t_s) {
-      push_fix(fix);
-      fix_pending = gps.next(fix) == io::ReadStatus::Row;
-    }
-    navigator->push_imu(s);
-    if (std::isnan(t_first)) t_first = s.t_s;
-    t_last = s.t_s;
-    ++totals.imu_samples;
-  }
-  if (st == io::ReadStatus::Error) {
-    error = imu.error().to_string();
-    return false;
-  }
+  NavigatorFeed feed(*navigator, opt);
+  if (!source->run(feed, error)) return false;
+  totals.imu_samples = feed.imu_samples;
+  totals.note = source->note();
   navigator->flush();
   if (has_truth && truth.error().message.size()) {
     error = truth.error().to_string();
     return false;
   }
+  const SourceCounters src = source->counters();
+  const double t_first = feed.t_first, t_last = feed.t_last;
+  const std::uint64_t epochs = feed.epochs, used = feed.used, dropped_outage = feed.dropped_outage,
+                      dropped_period = feed.dropped_period;
 
   // summary.json (end of run: allocation here does not grow with the flight).
   using nlohmann::json;
@@ -380,8 +352,8 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
   sj["accepted"] = {{"gnss_position", c.accepted[0]}, {"gnss_velocity", c.accepted[1]}};
   sj["gnss"] = {{"epochs", epochs}, {"used", used}, {"dropped_outage", dropped_outage}, {"dropped_period", dropped_period},
                 {"late", c.gnss_late}, {"overflow", c.gnss_overflow}, {"resets", c.gnss_resets}};
-  sj["corrupt_sentences"] = has_gps ? gps.corrupt() : 0;
-  sj["imu"] = {{"incomplete_rows", imu_incomplete}, {"non_increasing", c.imu_non_increasing}, {"gaps", c.imu_gaps},
+  sj["corrupt_sentences"] = src.corrupt_sentences;
+  sj["imu"] = {{"incomplete_rows", src.incomplete_rows}, {"non_increasing", c.imu_non_increasing}, {"gaps", c.imu_gaps},
                {"invalid", c.imu_invalid}};
   json sens = json::object();
   static constexpr const char* kAxes[] = {"ax", "ay", "az", "gx", "gy", "gz"};

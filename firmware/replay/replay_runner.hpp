@@ -1,6 +1,7 @@
 #pragma once
-// `sinu replay`: a dataset folder through the Navigator, writing nav.csv,
-// innovations.csv and summary.json into the output folder.
+// `sinu replay`: a dataset folder or a raw HAL recording (replay_source.hpp)
+// through the Navigator, writing nav.csv, innovations.csv and summary.json
+// into the output folder.
 #include <string>
 
 #include "firmware/replay/replay_options.hpp"
@@ -11,11 +12,12 @@ struct ReplayTotals {
   std::uint64_t imu_samples = 0;
   double rmse_pos_h_m = 0.0;
   bool aligned = false;
+  std::string note;  // from the source, e.g. "truncated: ..." ("" if nothing to say)
 };
 
 /// Returns true on success; false with a one-line `error` (file:line:column
 /// where a file is at fault). Allocates a bounded number of times, independent
-/// of the dataset's length.
+/// of the input's length.
 bool run_replay(const ReplayOptions& options, ReplayTotals& totals, std::string& error);
 
 }  // namespace sinu::replay

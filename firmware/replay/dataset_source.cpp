@@ -1,0 +1,75 @@
+#include "firmware/replay/dataset_source.hpp"
+
+#include "firmware/dataset/imu_csv.hpp"
+
+namespace sinu::replay {
+
+bool DatasetSource::open(const std::string& dir, std::string& error) {
+  paths_ = io::DatasetPaths{dir};
+  if (!imu_.open(paths_.imu())) {
+    error = imu_.error().to_string();
+    return false;
+  }
+  has_gps_ = paths_.has_gps();
+  if (has_gps_ && !gps_.open(paths_.gps())) {
+    error = gps_.error().to_string();
+    return false;
+  }
+  return true;
+}
+
+bool DatasetSource::run(ReplayFeed& feed, std::string& error) {
+  drivers::GpsFix fix;
+  io::ReadStatus gps_st = has_gps_ ? gps_.next(fix) : io::ReadStatus::End;
+  io::CsvRow row;
+  io::ReadStatus st;
+  while ((st = imu_.next(row)) == io::ReadStatus::Row) {
+    const io::ImuRow r{row};
+    if (!r.has_accel() || !r.has_gyro()) {
+      ++incomplete_rows_;
+      continue;
+    }
+    est::ImuSample s;
+    s.t_s = r.t_s();
+    const auto f = r.specific_force_b_m_s2();
+    const auto g = r.angular_rate_b_rad_s();
+    s.specific_force_b_m_s2 = {f[0], f[1], f[2]};
+    s.angular_rate_b_rad_s = {g[0], g[1], g[2]};
+    s.has_mag = r.has_mag();
+    if (s.has_mag) {
+      const auto m = r.mag_b_uT();
+      s.mag_b_uT = {m[0], m[1], m[2]};
+    }
+    s.has_temp = r.has_temp();
+    s.temp_degC = s.has_temp ? r.temp_degC() : 0.0;
+    while (gps_st == io::ReadStatus::Row && fix.arrival_s <= s.t_s) {
+      feed.on_fix(fix);
+      gps_st = gps_.next(fix);
+    }
+    feed.on_imu(s);
+  }
+  if (st == io::ReadStatus::Error) {
+    error = imu_.error().to_string();
+    return false;
+  }
+  if (gps_st == io::ReadStatus::Error) {
+    error = gps_.error().to_string();
+    return false;
+  }
+  return true;
+}
+
+bool DatasetSource::first_sample_has_mag() {
+  io::CsvReader imu(io::kImuSchema);  // a second reader: the first one stays at the start
+  io::CsvRow row;
+  if (!imu.open(paths_.imu()) || imu.next(row) != io::ReadStatus::Row) return false;
+  return io::ImuRow{row}.has_mag();
+}
+
+SourceCounters DatasetSource::counters() const {
+  return {incomplete_rows_, has_gps_ ? gps_.corrupt() : 0};
+}
+
+std::string DatasetSource::default_truth() const { return paths_.has_truth() ? paths_.truth() : std::string(); }
+
+}  // namespace sinu::replay

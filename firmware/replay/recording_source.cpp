@@ -1,0 +1,105 @@
+#include "firmware/replay/recording_source.hpp"
+
+namespace sinu::replay {
+
+bool RecordingSource::open(const std::string& path, std::string& error) {
+  path_ = path;
+  session_ = std::make_unique<hal::ReplaySession>();
+  if (!session_->load(path, error)) return false;
+  held_ = std::make_unique<est::RingBuffer<Held, kHeldSamples>>();
+  fixes_ = std::make_unique<est::RingBuffer<drivers::GpsFix, kHeldFixes>>();
+  return true;
+}
+
+namespace {
+/// Stops the board loop at the first IMU sample.
+class FirstSample final : public board::BoardSink {
+ public:
+  void on_imu(const drivers::ImuSample& s) override {
+    if (!seen) has_mag = s.has_mag;
+    seen = true;
+    stop.store(true);
+  }
+  void on_sentence(hal::TimeNs, std::string_view) override {}
+  void on_fix(const drivers::GpsFix&) override {}
+  std::atomic<bool> stop{false};
+  bool seen = false, has_mag = false;
+};
+}  // namespace
+
+bool RecordingSource::first_sample_has_mag() {
+  hal::ReplaySession probe;
+  std::string error;
+  if (!probe.load(path_, error)) return false;
+  FirstSample first;
+  board::BoardLoop loop({probe.drdy(), probe.i2c(), probe.serial(), probe.clock()}, imu_config_);
+  loop.run(first, &first.stop);
+  return first.has_mag;
+}
+
+void RecordingSource::release_oldest() {
+  const est::ImuSample& s = held_->front().sample;
+  while (!fixes_->empty() && fixes_->front().arrival_s <= s.t_s) {
+    feed_->on_fix(fixes_->front());
+    fixes_->pop();
+  }
+  feed_->on_imu(s);
+  last_fed_t_s_ = s.t_s;
+  held_->pop();
+}
+
+void RecordingSource::on_imu(const drivers::ImuSample& d) {
+  if (held_->full()) release_oldest();  // only above 1000 Hz
+  Held h;
+  h.t_ns = d.t_ns;
+  est::ImuSample& s = h.sample;
+  s.t_s = hal::ns_to_s(d.t_ns);  // as imu.csv's t reads back: ns_to_s rounds correctly
+  s.specific_force_b_m_s2 = {d.specific_force_b_m_s2[0], d.specific_force_b_m_s2[1], d.specific_force_b_m_s2[2]};
+  s.angular_rate_b_rad_s = {d.angular_rate_b_rad_s[0], d.angular_rate_b_rad_s[1], d.angular_rate_b_rad_s[2]};
+  s.has_mag = d.has_mag;
+  if (s.has_mag) s.mag_b_uT = {d.mag_b_uT[0], d.mag_b_uT[1], d.mag_b_uT[2]};
+  s.has_temp = true;  // the driver reads the temperature with every sample
+  s.temp_degC = d.temp_degC;
+  held_->push(h);
+}
+
+void RecordingSource::on_fix(const drivers::GpsFix& fix) {
+  if (fix.arrival_s <= last_fed_t_s_) ++reordered_fixes_;  // a sample after its arrival was already fed
+  if (fixes_->full()) {
+    feed_->on_fix(fixes_->front());
+    fixes_->pop();
+    ++reordered_fixes_;
+  }
+  fixes_->push(fix);
+}
+
+void RecordingSource::on_tick(hal::TimeNs now_ns) {
+  while (!held_->empty() && held_->front().t_ns <= now_ns - kReorderWindowNs) release_oldest();
+}
+
+bool RecordingSource::run(ReplayFeed& feed, std::string&) {
+  feed_ = &feed;
+  board::BoardLoop loop({session_->drdy(), session_->i2c(), session_->serial(), session_->clock()}, imu_config_);
+  loop.run(*this);
+  while (!held_->empty()) release_oldest();
+  // Fixes that arrived after the last sample are not fed (as from a dataset).
+  counters_.corrupt_sentences = loop.gps_counters().sentences.corrupt();
+  imu_errors_ = loop.imu().counters().i2c_errors;
+  desyncs_ = session_->desyncs();
+  return true;
+}
+
+std::string RecordingSource::note() const {
+  std::string n = session_ ? session_->stop_message() : std::string();
+  auto add = [&n](const std::string& s) { n += (n.empty() ? "" : "; ") + s; };
+  if (desyncs_ > 0)
+    add(std::to_string(desyncs_) + " records did not match the driver's requests (other --mounting or driver "
+        "settings than when recorded?)");
+  if (imu_errors_ > 0) add(std::to_string(imu_errors_) + " IMU transfers failed as recorded");
+  if (reordered_fixes_ > 0)
+    add(std::to_string(reordered_fixes_) + " GPS fixes completed more than " +
+        std::to_string(kReorderWindowNs / 1'000'000'000) + " s after they arrived, fed late");
+  return n;
+}
+
+}  // namespace sinu::replay

@@ -1,0 +1,53 @@
+#pragma once
+// Where `sinu replay` gets its samples: a dataset folder (imu.csv, gps.nmea)
+// or a raw HAL recording run through the board loop and the drivers
+// (HAL -> drivers -> estimator). Both feed the navigator the same stream:
+// IMU samples in time order and, before each sample, every GPS fix that
+// had arrived by the sample's time (fixes arriving after the last sample
+// are not fed). A recording converted to a dataset (`sinu convert RAW DIR`)
+// therefore replays to the same bits as the recording itself.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "drivers/gps/gps_fix.hpp"
+#include "drivers/imu/icm20948.hpp"
+#include "estimator/ins/imu_sample.hpp"
+
+namespace sinu::replay {
+
+class ReplayFeed {
+ public:
+  virtual ~ReplayFeed() = default;
+  virtual void on_fix(const drivers::GpsFix& fix) = 0;
+  virtual void on_imu(const est::ImuSample& sample) = 0;
+};
+
+struct SourceCounters {
+  std::uint64_t incomplete_rows = 0;    // imu.csv rows without accel or gyro (left out)
+  std::uint64_t corrupt_sentences = 0;  // NMEA sentences failing checksum/fields, plus skipped gps.nmea lines
+};
+
+class ReplaySource {
+ public:
+  virtual ~ReplaySource() = default;
+  /// Feeds everything, in order, once. False with `error` (naming the file,
+  /// and line where known) on a read error.
+  virtual bool run(ReplayFeed& feed, std::string& error) = 0;
+  /// Whether the first IMU sample carries a magnetometer reading (decides
+  /// the magnetometer states before run()).
+  virtual bool first_sample_has_mag() = 0;
+  virtual SourceCounters counters() const = 0;
+  /// The truth.csv used when none is given ("" for none).
+  virtual std::string default_truth() const { return {}; }
+  /// What the user should know after run() (a truncated recording, ...); "" if nothing.
+  virtual std::string note() const { return {}; }
+};
+
+/// `in` is a dataset folder or a raw recording file (recognised by its
+/// header); `imu` configures the ICM-20948 driver for a recording. nullptr
+/// with `error` naming `in` when it is neither or cannot be read.
+std::unique_ptr<ReplaySource> open_replay_source(const std::string& in, const drivers::Icm20948Config& imu,
+                                                 std::string& error);
+
+}  // namespace sinu::replay
