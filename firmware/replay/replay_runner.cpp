@@ -348,8 +348,13 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
   sj["nis"] = nis;
   sj["nees"] = {{"dof", metrics.nees_dof}, {"count", metrics.nees.count}, {"mean", metrics.nees.mean()},
                 {"inside_95", metrics.nees.inside_fraction()}};
-  sj["rejected"] = {{"gnss_position", c.rejected[0]}, {"gnss_velocity", c.rejected[1]}};
-  sj["accepted"] = {{"gnss_position", c.accepted[0]}, {"gnss_velocity", c.accepted[1]}};
+  json rejected = json::object(), accepted = json::object();
+  for (std::size_t i = 0; i < est::kAidingSourceCount; ++i) {
+    rejected[est::kAidingSourceNames[i]] = c.rejected[i];
+    accepted[est::kAidingSourceNames[i]] = c.accepted[i];
+  }
+  sj["rejected"] = rejected;
+  sj["accepted"] = accepted;
   sj["gnss"] = {{"epochs", epochs}, {"used", used}, {"dropped_outage", dropped_outage}, {"dropped_period", dropped_period},
                 {"late", c.gnss_late}, {"overflow", c.gnss_overflow}, {"resets", c.gnss_resets}};
   sj["corrupt_sentences"] = src.corrupt_sentences;

@@ -47,7 +47,8 @@ TEST(Replay, WritesNavInnovationsAndSummary) {
   EXPECT_TRUE(s["aligned"].get<bool>());
   // 15 GM states + the magnetometer's Earth field and hard iron (3 + 3): the simulated imu.csv has one.
   EXPECT_EQ(s["states"].get<int>(), 15 + 6);
-  EXPECT_GT(s["accepted"]["magnetometer"].get<int>(), 2500);  // 10 Hz for ~280 s after alignment
+  // 10 Hz from alignment (GPS course at the take-off run, ~65 s in) to the end: ~2350.
+  EXPECT_GT(s["accepted"]["magnetometer"].get<int>(), 2000);
   // GPS errors of the simulator are ~1.3 m per axis; with GPS the solution sits within a few metres.
   EXPECT_LT(s["rmse"]["pos_h_m"].get<double>(), 5.0);
   ASSERT_EQ(s["outages"].size(), 1u);
