@@ -17,17 +17,16 @@ mkdir -p "$out"
 [ -f "$out/flight/imu.csv" ] || "$SINU" simulate flight --out "$out/flight" --seed 7 --hidden-out "$out/flight.hidden.json"
 [ -f "$out/bench/imu.csv" ] || "$SINU" simulate static --out "$out/bench" --seed 7 --hours 2 --hidden-out "$out/bench.hidden.json"
 [ -f "$out/calib.json" ] || "$SINU" calibrate --in "$out/bench" --out "$out/calib.json" --report "$out/calibration" --quiet
-# Record it as raw HAL traffic (emulated ICM-20948 registers + NMEA bytes), then
-# read the recording back through the HAL replay back ends and the drivers.
+# Record it as raw HAL traffic (emulated ICM-20948 registers + NMEA bytes);
+# every replay below reads that recording through the HAL replay back ends and
+# the drivers, as the board would have seen it.
 "$SINU" convert "$out/flight" "$out/flight.raw"
-rm -rf "$out/flight_hal" && "$SINU" convert "$out/flight.raw" "$out/flight_hal"
-cp "$out/flight/truth.csv" "$out/flight_hal/truth.csv"
 # accel_bias/gyro_bias: the unit's per-power-on bias (not in calib.json's zero-mean
 # models); gps_position_bias: the receiver's slowly varying error.
 t0=$(awk -F, 'NR==2 {print $1; exit}' "$out/flight/imu.csv")
 outages=$(awk -v t="$t0" 'BEGIN {printf "%.1f:30,%.1f:30,%.1f:30,%.1f:30", t+300, t+700, t+1100, t+1500}')
 for model in gm ar; do
-  common=(--in "$out/flight_hal" --calib "$out/calib.json" --model "$model" --gps-latency 0.045
+  common=(--in "$out/flight.raw" --truth "$out/flight/truth.csv" --calib "$out/calib.json" --model "$model" --gps-latency 0.045
           --effects accel_bias,gyro_bias,gps_position_bias)
   "$SINU" replay "${common[@]}" --out "$out/replay_$model"
   "$SINU" replay "${common[@]}" --outage "$outages" --out "$out/outages_$model"
@@ -42,7 +41,7 @@ for model in gm ar; do
     "$(field "$out/outages_$model" outage_max_drift_h_rms_m)"
 done
 # Model against measurements: does the replayed flight show an effect the model lacks?
-"$SINU" diagnose --in "$out/flight_hal" --calib "$out/calib.json" --model gm --gps-latency 0.045 --rounds 1 \
+"$SINU" diagnose --in "$out/flight.raw" --truth "$out/flight/truth.csv" --calib "$out/calib.json" --model gm --gps-latency 0.045 --rounds 1 \
   --out "$out/diagnose"
 drive=../shared/data/real/drive_0708
 if [ -d "$drive" ]; then

@@ -1,4 +1,4 @@
-// sinu diagnose --in DATASET [--calib calib.json] [--model gm|ar] [--effects BASELINE]
+// sinu diagnose --in DATASET|RAW [--truth truth.csv] [--calib calib.json] [--model gm|ar] [--effects BASELINE]
 //   [--candidates NAME,...] [--rounds N] --out DIR
 // Compares the model with the measurements (innovations against the filter's
 // own sigmas, per source and flight phase), tries each effect the EKF can
@@ -64,7 +64,8 @@ void add_diagnose_command(CLI::App& app, Action& action) {
   auto c = std::make_shared<DiagnoseCliOptions>();
   replay::ReplayOptions& r = c->opt.replay;
   CLI::App* sub = app.add_subcommand("diagnose", "Compare the model with the measurements and name the missing effect");
-  sub->add_option("--in", r.in_dir, "Dataset folder (imu.csv, gps.nmea, truth.csv optional)")->required();
+  sub->add_option("--in", r.in_dir, "Dataset folder (imu.csv, gps.nmea, truth.csv optional) or raw recording")->required();
+  sub->add_option("--truth", r.truth_path, "truth.csv to compare with (default: the dataset folder's, if any)");
   sub->add_option("--calib", r.calib_path, "calib.json from `sinu calibrate` (omitted: built-in defaults)");
   sub->add_option("--model", c->model, "Sensor-error model: gm or ar")->capture_default_str();
   sub->add_option("--effects", c->effects, "The model to start from (effect states)")->capture_default_str();
