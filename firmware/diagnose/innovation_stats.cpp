@@ -37,14 +37,20 @@ struct NavPhases {
   }
 };
 
-bool read_phases(const std::string& path, NavPhases& out, std::string& error) {
-  std::ifstream in(path);
-  if (!in) {
-    error = path + ": cannot open";
+/// Opens a CSV file and reads its header line; false with `error` if it cannot.
+bool open_csv(const std::string& path, std::ifstream& in, std::string& header, std::string& error) {
+  in.open(path);
+  if (!in || !std::getline(in, header)) {
+    error = path + ": cannot open or empty";
     return false;
   }
+  return true;
+}
+
+bool read_phases(const std::string& path, NavPhases& out, std::string& error) {
+  std::ifstream in;
   std::string line;
-  std::getline(in, line);
+  if (!open_csv(path, in, line, error)) return false;
   const auto header = split_csv(line);
   if (header.size() < 10 || header[0] != "t" || header[6] != "vd" || header[9] != "yaw") {
     error = path + ":1: header does not start with the truth.csv columns t,lat,lon,h,vn,ve,vd,roll,pitch,yaw";
@@ -103,13 +109,9 @@ bool read_innovation_stats(const std::string& dir, InnovationStats& out, std::st
   NavPhases phases;
   if (!read_phases(dir + "/nav.csv", phases, error)) return false;
   const std::string path = dir + "/innovations.csv";
-  std::ifstream in(path);
-  if (!in) {
-    error = path + ": cannot open";
-    return false;
-  }
+  std::ifstream in;
   std::string line;
-  std::getline(in, line);
+  if (!open_csv(path, in, line, error)) return false;
   if (line != "t,source,component,innovation,sigma,test_ratio,accepted") {
     error = path + ":1: unexpected header '" + line + "'";
     return false;
