@@ -24,13 +24,6 @@ using namespace sinu;
 
 namespace {
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 /// 10 s at 40 Hz, a slow turn, mag every other row, temperature drifting;
 /// 5 Hz GPS with one corrupt sentence.
 void write_dataset(const std::filesystem::path& dir) {
@@ -79,13 +72,13 @@ TEST(ReplayRoundTrip, DatasetToRawToDatasetIsBitExactAfterTheFirstQuantisation) 
   ASSERT_TRUE(dataset_to_raw(r1, d2));
   ASSERT_TRUE(dataset_to_raw(d2, r2));
   ASSERT_TRUE(dataset_to_raw(r2, d3));
-  EXPECT_EQ(slurp(r1), slurp(r2)) << "raw -> dataset -> raw: the same bytes";
-  EXPECT_EQ(slurp(d2 + "/imu.csv"), slurp(d3 + "/imu.csv"));
-  EXPECT_EQ(slurp(d2 + "/gps.nmea"), slurp(d3 + "/gps.nmea"));
+  EXPECT_EQ(test::read_file(r1), test::read_file(r2)) << "raw -> dataset -> raw: the same bytes";
+  EXPECT_EQ(test::read_file(d2 + "/imu.csv"), test::read_file(d3 + "/imu.csv"));
+  EXPECT_EQ(test::read_file(d2 + "/gps.nmea"), test::read_file(d3 + "/gps.nmea"));
   // The first pass quantises to the sensor's LSB: d2 is d1 to half an LSB,
   // with the same times, the same empty magnetometer fields, and gps.nmea
   // identical (sentences keep their bytes and times, corrupt one included).
-  EXPECT_EQ(slurp((d1 / "gps.nmea").string()).size() + 50 * 2 * 3, slurp(d2 + "/gps.nmea").size())
+  EXPECT_EQ(test::read_file((d1 / "gps.nmea").string()).size() + 50 * 2 * 3, test::read_file(d2 + "/gps.nmea").size())
       << "times gain 3 decimals (microseconds)";
   std::ifstream a(d1 / "imu.csv"), b(d2 + "/imu.csv");
   std::string la, lb;
@@ -214,7 +207,7 @@ TEST(ReplayRoundTrip, RealDriveSurvivesTheRoundTrip) {
   ASSERT_TRUE(dataset_to_raw(drive, r1));
   ASSERT_TRUE(dataset_to_raw(r1, d2));
   ASSERT_TRUE(dataset_to_raw(d2, r2));
-  EXPECT_EQ(slurp(r1), slurp(r2));
+  EXPECT_EQ(test::read_file(r1), test::read_file(r2));
   // gps.nmea keeps every sentence byte for byte.
   std::ifstream a(drive + "/gps.nmea"), b(d2 + "/gps.nmea");
   std::string la, lb;

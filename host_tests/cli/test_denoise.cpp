@@ -14,6 +14,7 @@
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
+using sinu::test::read_file;
 using sinu::test::run_sinu;
 namespace col = sinu::io::imu_col;
 
@@ -51,11 +52,6 @@ std::vector<sinu::io::CsvRow> read_imu(const std::string& path) {
   return rows;
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
 }  // namespace
 
 TEST(Denoise, KeepsMotionRemovesVibrationAndAlignsTime) {
@@ -71,8 +67,8 @@ TEST(Denoise, KeepsMotionRemovesVibrationAndAlignsTime) {
   const auto r = run_sinu({"denoise", "--in", in.string(), "--out", out.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("db4 level 3, delay 63 samples"), std::string::npos) << r.err;
-  EXPECT_EQ(slurp((out / "gps.nmea").string()), slurp((in / "gps.nmea").string()));
-  EXPECT_EQ(slurp((out / "meta.json").string()), slurp((in / "meta.json").string()));
+  EXPECT_EQ(read_file((out / "gps.nmea").string()), read_file((in / "gps.nmea").string()));
+  EXPECT_EQ(read_file((out / "meta.json").string()), read_file((in / "meta.json").string()));
 
   const auto rows = read_imu((out / "imu.csv").string());
   ASSERT_EQ(rows.size(), kRows);

@@ -14,6 +14,7 @@
 
 #include "drivers/gps/nmea_stream.hpp"
 #include "host_tests/support/shared_data.hpp"
+#include "host_tests/support/temp_dir.hpp"
 
 namespace {
 
@@ -23,13 +24,6 @@ using sinu::drivers::NmeaStream;
 struct LatLon {
   double lat = 0.0, lon = 0.0;
 };
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 /// "2017-01-10T00:09:41.000Z" -> milliseconds of the UTC day.
 long long time_of_day_ms(const std::string& iso) {
@@ -54,7 +48,7 @@ struct Reference {
 
 Reference read_chk(const std::string& path) {
   Reference ref;
-  std::istringstream in(slurp(path));
+  std::istringstream in(sinu::test::read_file(path));
   std::string line;
   long long last_time_ms = -1;
   while (std::getline(in, line)) {
@@ -152,7 +146,7 @@ TEST(NmeaGpsdLogs, FixesAgreeWithGpsd) {
   for (const std::string& log : gpsd_logs()) {
     SCOPED_TRACE(log);
     const Reference ref = read_chk(log + ".chk");
-    const Ours ours = run_stream(slurp(log));
+    const Ours ours = run_stream(sinu::test::read_file(log));
     int gpsd_only = 0, ours_only = 0;
     for (const auto& [t, r] : ref.fixes) {
       const auto it = ours.fixes.find(t);
@@ -180,7 +174,7 @@ TEST(NmeaGpsdLogs, SentencesAgreeWithGpsdPacketLayer) {
   for (const std::string& log : gpsd_logs()) {
     SCOPED_TRACE(log);
     const Reference ref = read_chk(log + ".chk");
-    const Ours ours = run_stream(slurp(log));
+    const Ours ours = run_stream(sinu::test::read_file(log));
     EXPECT_EQ(ours.sentences, ref.sentences);
     if (const char* dump = std::getenv("SINU_GPSD_DUMP")) {
       const std::string base = std::string(dump) + "/" + std::filesystem::path(log).filename().string();

@@ -22,13 +22,6 @@
 namespace sinu::test {
 namespace {
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 void spit(const std::string& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary);
   out << bytes;
@@ -92,12 +85,12 @@ TEST_F(ReplayRecording, RawAndTheDatasetItConvertsToGiveTheSameBits) {
   r = replay(flight_.dir2, b, truth());
   ASSERT_EQ(r.exit_code, 0) << r.err;
 
-  const std::string nav_a = slurp(a + "/nav.csv"), innov_a = slurp(a + "/innovations.csv");
+  const std::string nav_a = read_file(a + "/nav.csv"), innov_a = read_file(a + "/innovations.csv");
   // Something to compare: 10 Hz rows from alignment (about a minute in) to the end, GPS innovations.
   EXPECT_GT(count_lines(nav_a), 2000u);
   EXPECT_GT(count_lines(innov_a), 1000u);
-  EXPECT_EQ(nav_a, slurp(b + "/nav.csv"));
-  EXPECT_EQ(innov_a, slurp(b + "/innovations.csv"));
+  EXPECT_EQ(nav_a, read_file(b + "/nav.csv"));
+  EXPECT_EQ(innov_a, read_file(b + "/innovations.csv"));
   // summary.json prints doubles in shortest round-trip form, so equal text is
   // equal final state (effects, sensor errors) and metrics to the last bit.
   nlohmann::json sa = read_json(a + "/summary.json"), sb = read_json(b + "/summary.json");
@@ -124,8 +117,8 @@ TEST(ReplayRecordingSlowGps, OneHertzGpsGivesTheSameBitsToo) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   ASSERT_EQ(replay(f.dir2, b, f.dir + "/truth.csv").exit_code, 0);
-  EXPECT_EQ(slurp(a + "/nav.csv"), slurp(b + "/nav.csv"));
-  EXPECT_EQ(slurp(a + "/innovations.csv"), slurp(b + "/innovations.csv"));
+  EXPECT_EQ(read_file(a + "/nav.csv"), read_file(b + "/nav.csv"));
+  EXPECT_EQ(read_file(a + "/innovations.csv"), read_file(b + "/innovations.csv"));
   nlohmann::json sa = read_json(a + "/summary.json"), sb = read_json(b + "/summary.json");
   EXPECT_GT(sa["gnss"]["used"].get<int>(), 200);
   sa.erase("dataset");
@@ -144,10 +137,10 @@ TEST(ReplayRecordingRealDrive, SameBitsAsTheDatasetItConvertsTo) {
   const std::string a = tmp.file("a"), b = tmp.file("b");
   ASSERT_EQ(replay(raw, a, drive + "/truth.csv").exit_code, 0);
   ASSERT_EQ(replay(dir2, b, drive + "/truth.csv").exit_code, 0);
-  const std::string nav = slurp(a + "/nav.csv");
+  const std::string nav = read_file(a + "/nav.csv");
   EXPECT_GT(count_lines(nav), 3000u);
-  EXPECT_EQ(nav, slurp(b + "/nav.csv"));
-  EXPECT_EQ(slurp(a + "/innovations.csv"), slurp(b + "/innovations.csv"));
+  EXPECT_EQ(nav, read_file(b + "/nav.csv"));
+  EXPECT_EQ(read_file(a + "/innovations.csv"), read_file(b + "/innovations.csv"));
   nlohmann::json sa = read_json(a + "/summary.json"), sb = read_json(b + "/summary.json");
   sa.erase("dataset");
   sb.erase("dataset");
@@ -157,13 +150,13 @@ TEST(ReplayRecordingRealDrive, SameBitsAsTheDatasetItConvertsTo) {
 TEST_F(ReplayRecording, TheComparisonSeesAOneSampleDifferenceAndAnOptionChange) {
   const std::string base = out("base");
   ASSERT_EQ(replay(flight_.raw, base, truth()).exit_code, 0);
-  const std::string nav = slurp(base + "/nav.csv");
+  const std::string nav = read_file(base + "/nav.csv");
 
   // DIR2 with one accelerometer value changed by 0.01 m/s^2 (4 LSB at 8 g)
   // in one row, 100 s into the flight.
   const std::string edited = out("edited");
   std::filesystem::copy(flight_.dir2, edited, std::filesystem::copy_options::recursive);
-  std::istringstream in(slurp(edited + "/imu.csv"));
+  std::istringstream in(read_file(edited + "/imu.csv"));
   std::ostringstream os;
   std::string line;
   for (int row = 0; std::getline(in, line); ++row) {
@@ -179,17 +172,17 @@ TEST_F(ReplayRecording, TheComparisonSeesAOneSampleDifferenceAndAnOptionChange) 
   spit(edited + "/imu.csv", os.str());
   const std::string d = out("edited_out");
   ASSERT_EQ(replay(edited, d, truth()).exit_code, 0);
-  EXPECT_NE(nav, slurp(d + "/nav.csv"));
+  EXPECT_NE(nav, read_file(d + "/nav.csv"));
 
   const std::string l = out("latency");
   ASSERT_EQ(replay(flight_.raw, l, truth(), {"--gps-latency", "0.05"}).exit_code, 0);
-  EXPECT_NE(nav, slurp(l + "/nav.csv"));
+  EXPECT_NE(nav, read_file(l + "/nav.csv"));
 }
 
 TEST_F(ReplayRecording, ATruncatedRecordingReplaysUpToItsLastWholeRecordAndSaysSo) {
   const std::string whole = out("whole");
   ASSERT_EQ(replay(flight_.raw, whole, truth()).exit_code, 0);
-  const std::string bytes = slurp(flight_.raw);
+  const std::string bytes = read_file(flight_.raw);
   const std::string cut = out("cut.raw");
   spit(cut, bytes.substr(0, bytes.size() / 2 + 7));  // mid-record, most likely; the CRC catches it either way
   const std::string part = out("part");
@@ -205,7 +198,7 @@ TEST_F(ReplayRecording, ATruncatedRecordingReplaysUpToItsLastWholeRecordAndSaysS
   // Up to the cut the output is the whole recording's: all rows but the last
   // second (the navigator's 0.3 s horizon and the GPS epoch the cut lost
   // are flushed differently) are identical.
-  std::istringstream a(slurp(whole + "/nav.csv")), b(slurp(part + "/nav.csv"));
+  std::istringstream a(read_file(whole + "/nav.csv")), b(read_file(part + "/nav.csv"));
   std::vector<std::string> rows_part;
   for (std::string l; std::getline(b, l);) rows_part.push_back(l);
   ASSERT_GT(rows_part.size(), 20u);

@@ -6,23 +6,16 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 
 #include "firmware/sim/effects.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
 using sinu::test::run_sinu;
+using sinu::test::read_file;
 using sinu::test::TempDir;
 
 namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 }  // namespace
 
@@ -39,13 +32,13 @@ TEST(SimulateCli, SameSeedSameBytesOtherSeedOtherData) {
   ASSERT_EQ(run_sinu(args("b", "17")).exit_code, 0);
   ASSERT_EQ(run_sinu(args("c", "18")).exit_code, 0);
   for (const char* f : {"imu.csv", "gps.nmea", "truth.csv", "meta.json"}) {
-    EXPECT_EQ(slurp(tmp.file(std::string("a/") + f)), slurp(tmp.file(std::string("b/") + f))) << f;
-    EXPECT_NE(slurp(tmp.file(std::string("a/") + f)), slurp(tmp.file(std::string("c/") + f))) << f;
+    EXPECT_EQ(read_file(tmp.file(std::string("a/") + f)), read_file(tmp.file(std::string("b/") + f))) << f;
+    EXPECT_NE(read_file(tmp.file(std::string("a/") + f)), read_file(tmp.file(std::string("c/") + f))) << f;
   }
-  EXPECT_EQ(slurp(tmp.file("a.json")), slurp(tmp.file("b.json")));
+  EXPECT_EQ(read_file(tmp.file("a.json")), read_file(tmp.file("b.json")));
   // The hidden file holds the three effects; the dataset folder holds only
   // the four files of the format.
-  const auto hidden = nlohmann::json::parse(slurp(tmp.file("a.json")));
+  const auto hidden = nlohmann::json::parse(read_file(tmp.file("a.json")));
   EXPECT_EQ(hidden["effects"].size(), 3u);
   EXPECT_EQ(hidden["schema"], "sinu-simulate-hidden/1");
   std::set<std::string> files;
@@ -59,14 +52,14 @@ TEST(SimulateCli, HiddenEffectsFedBackReproduceTheDataset) {
                       "--effects-random", "4", "--hidden-out", tmp.file("a.json")})
                 .exit_code,
             0);
-  const auto hidden = nlohmann::json::parse(slurp(tmp.file("a.json")));
+  const auto hidden = nlohmann::json::parse(read_file(tmp.file("a.json")));
   const std::string fx = tmp.write("fx.json", hidden["effects"].dump());
   ASSERT_EQ(run_sinu({"simulate", "flight", "--out", tmp.file("b"), "--seed", "5", "--duration", "300", "--effects",
                       fx})
                 .exit_code,
             0);
-  EXPECT_EQ(slurp(tmp.file("a/imu.csv")), slurp(tmp.file("b/imu.csv")));
-  EXPECT_EQ(slurp(tmp.file("a/gps.nmea")), slurp(tmp.file("b/gps.nmea")));
+  EXPECT_EQ(read_file(tmp.file("a/imu.csv")), read_file(tmp.file("b/imu.csv")));
+  EXPECT_EQ(read_file(tmp.file("a/gps.nmea")), read_file(tmp.file("b/gps.nmea")));
 }
 
 TEST(SimulateCli, RatesAndDurationAreHonoured) {
@@ -74,7 +67,7 @@ TEST(SimulateCli, RatesAndDurationAreHonoured) {
   const auto r = run_sinu({"simulate", "flight", "--out", tmp.file("d"), "--seed", "2", "--duration", "360",
                            "--imu-rate", "100", "--gps-rate", "10"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto meta = nlohmann::json::parse(slurp(tmp.file("d/meta.json")));
+  const auto meta = nlohmann::json::parse(read_file(tmp.file("d/meta.json")));
   EXPECT_EQ(meta["imu_rate_hz"], 100.0);
   EXPECT_EQ(meta["gps_rate_hz"], 10.0);
   const auto insp = run_sinu({"inspect", "dataset", tmp.file("d")});

@@ -6,22 +6,12 @@
 #include <unistd.h>
 
 #include <fstream>
-#include <sstream>
 
 #include "host_tests/support/temp_dir.hpp"
 
 extern char** environ;
 
 namespace sinu::test {
-
-namespace {
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-}  // namespace
 
 ProcessResult run_process(const std::vector<std::string>& argv) {
   TempDir tmp;
@@ -42,8 +32,8 @@ ProcessResult run_process(const std::vector<std::string>& argv) {
     if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
   }
   posix_spawn_file_actions_destroy(&actions);
-  r.out = slurp(out_path);
-  r.err = slurp(err_path);
+  r.out = read_file(out_path);
+  r.err = read_file(err_path);
   return r;
 }
 

@@ -20,4 +20,7 @@ class TempDir {
   std::filesystem::path path_;
 };
 
+/// The whole file as bytes (empty if it cannot be read).
+std::string read_file(const std::string& path);
+
 }  // namespace sinu::test

@@ -1,0 +1,62 @@
+#include "firmware/cli/navigation_options.hpp"
+
+namespace sinu::app {
+
+void NavigationCliOptions::add_to(CLI::App& sub) {
+  sub.add_option("--in", opt.in_dir,
+                 "Dataset folder (imu.csv, gps.nmea, truth.csv), or a raw recording (sinu record, sinu convert) "
+                 "replayed through the HAL and drivers")
+      ->required();
+  sub.add_option("--truth", opt.truth_path, "truth.csv to compare with (default: the dataset folder's, if any)");
+  sub.add_option("--calib", opt.calib_path,
+                 "calib.json from `sinu calibrate`; omitted: built-in defaults (README, 'sinu replay')");
+  sub.add_option("--model", model, "Sensor-error model: gm (GM1, 15 states) or ar (AR(p), 9+6p states)")
+      ->capture_default_str();
+  sub.add_option("--ar-method", opt.calib.ar_method, "AR estimator in calib.json: burg, yule_walker, covariance")
+      ->capture_default_str();
+  sub.add_option("--ar-order", opt.calib.ar_order, "AR order p (1..4)")->capture_default_str();
+  sub.add_option("--effects", effects, "Effect states in the model (vocabulary: README, 'sinu replay')")
+      ->capture_default_str();
+  sub.add_option("--gps-latency", opt.gps_latency_s, "GPS latency: fix valid at arrival minus this [s]")
+      ->capture_default_str();
+  sub.add_option("--lever-arm", lever_arm, "Antenna minus IMU in body FRD [m], x,y,z")->delimiter(',');
+  sub.add_option("--denoise", opt.denoise,
+                 "Wavelet denoiser in front of the INS: auto (calib.json's), none, or WAVELET:LEVELS (db4:3)")
+      ->capture_default_str();
+  sub.add_option("--gate", opt.gate_sigma, "Innovation gate [sigma]")->capture_default_str();
+  sub.add_option("--gps-vel-sigma", opt.sigma.velocity_sigma_m_s,
+                 "GNSS velocity noise per axis, 1 sigma [m/s] (NMEA carries none)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub.add_option("--mag-sigma", opt.mag_sigma_uT, "Magnetometer noise per axis, 1 sigma [uT]")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub.add_option("--mag-declination", opt.mag_declination_deg,
+                 "Site's magnetic declination [deg, east +]: align heading with the magnetometer at rest "
+                 "(default: from the GNSS course once moving)");
+  sub.add_flag("--no-mag", [this](std::int64_t) { opt.use_mag = false; },
+               "Do not fuse the magnetometer even when imu.csv has one");
+  imu.add_to(sub);
+}
+
+bool NavigationCliOptions::resolve(std::string& error) {
+  if (model == "gm") {
+    opt.calib.kind = est::NoiseModelKind::GaussMarkov;
+  } else if (model == "ar") {
+    opt.calib.kind = est::NoiseModelKind::AutoRegressive;
+  } else {
+    error = "--model must be gm or ar, not '" + model + "'";
+    return false;
+  }
+  if (!replay::parse_effects(effects, opt.effects, error)) return false;
+  if (!lever_arm.empty()) {
+    if (lever_arm.size() != 3) {
+      error = "--lever-arm needs three numbers x,y,z [m]";
+      return false;
+    }
+    opt.lever_arm_b_m = {lever_arm[0], lever_arm[1], lever_arm[2]};
+  }
+  return imu.to_config(opt.imu, error);
+}
+
+}  // namespace sinu::app
