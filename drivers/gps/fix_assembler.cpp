@@ -67,6 +67,21 @@ void FixAssembler::merge(const NmeaMessage& msg) {
       msg);
 }
 
+// An epoch closed by a time change never held the ender (the ender emits at
+// once): either nothing is learned yet, or the receiver skipped it this time.
+void FixAssembler::learn_cycle_end() {
+  if (cycle_end_ == SIZE_MAX) {
+    cycle_end_ = last_type_;
+    return;
+  }
+  short_epochs_ = last_type_ == short_end_ ? short_epochs_ + 1 : 1;
+  short_end_ = last_type_;
+  if (short_epochs_ >= kLowerAfter) {  // it has stopped sending the ender
+    cycle_end_ = last_type_;
+    short_epochs_ = 0;
+  }
+}
+
 bool FixAssembler::emit(GpsFix& out) {
   if (!is_open_ || !has_time_) {
     is_open_ = false;
@@ -74,15 +89,28 @@ bool FixAssembler::emit(GpsFix& out) {
   }
   out = open_;
   is_open_ = false;
-  cycle_end_ = last_type_;
+  if (last_type_ == cycle_end_) short_epochs_ = 0;
+  have_emitted_ = true;
+  emitted_utc_ms_ = open_.utc_ms;
   ++epochs_;
   return true;
 }
 
 bool FixAssembler::add(const NmeaMessage& msg, double arrival_s, GpsFix& out) {
   const std::optional<UtcMs> t = time_of(msg);
+  const std::size_t type = msg.index();
   bool emitted = false;
-  if (is_open_ && t && has_time_ && *t != open_.utc_ms) emitted = emit(out);
+  if (is_open_ && t && has_time_ && *t != open_.utc_ms) {
+    learn_cycle_end();  // closed by a time change
+    emitted = emit(out);
+  }
+  if (!is_open_ && t && have_emitted_ && *t == emitted_utc_ms_) {
+    // A sentence of the epoch just emitted (it came after the learned ender):
+    // the cycle ends later than thought. Counted, not made into an epoch.
+    ++late_;
+    cycle_end_ = type;
+    return emitted;
+  }
   if (!is_open_) {
     open_ = GpsFix{};
     open_.arrival_s = arrival_s;
@@ -94,8 +122,8 @@ bool FixAssembler::add(const NmeaMessage& msg, double arrival_s, GpsFix& out) {
     has_time_ = true;
   }
   merge(msg);
-  last_type_ = msg.index();
-  if (!emitted && msg.index() == cycle_end_ && has_time_) emitted = emit(out);
+  last_type_ = type;
+  if (!emitted && type == cycle_end_ && has_time_) emitted = emit(out);
   return emitted;
 }
 

@@ -2,9 +2,15 @@
 // Groups decoded NMEA messages into epochs (sentences with the same UTC time)
 // and emits one GpsFix per epoch. Time-less sentences (VTG, GSA) join the
 // open epoch. An epoch is emitted
-//   - as soon as the sentence type that ended the previous epoch arrives
-//     (the receiver's cycle is learned, like gpsd's cycle-ender), or
+//   - as soon as the receiver's cycle-ending sentence type arrives (learned,
+//     like gpsd's cycle-ender), or
 //   - when a sentence with a different time arrives, or on flush().
+// The cycle ender is learned from complete epochs only: an epoch that lacks
+// it (a receiver that skips GST now and then) is closed by the next epoch's
+// first sentence and leaves the ender unchanged; only kLowerAfter such epochs
+// in a row (the receiver changed its output) lower it. A timed sentence that
+// arrives after its epoch was emitted raises the ender to its type and is
+// counted as late, never turned into an epoch of its own.
 #include <cstdint>
 
 #include "drivers/gps/gps_fix.hpp"
@@ -20,17 +26,26 @@ class FixAssembler {
   /// Emits the open epoch, if any (end of stream).
   bool flush(GpsFix& out);
   std::uint64_t epochs() const { return epochs_; }
+  /// Timed sentences that arrived after their epoch had been emitted (dropped).
+  std::uint64_t late_sentences() const { return late_; }
 
  private:
+  static constexpr int kLowerAfter = 3;
   void merge(const NmeaMessage& msg);
   bool emit(GpsFix& out);
+  void learn_cycle_end();
 
   GpsFix open_{};
   bool is_open_ = false;
   bool has_time_ = false;
   std::size_t last_type_ = SIZE_MAX;   // variant index of the latest message in the open epoch
-  std::size_t cycle_end_ = SIZE_MAX;   // variant index that ended the previous epoch
+  std::size_t cycle_end_ = SIZE_MAX;   // variant index that ends the receiver's epoch
+  std::size_t short_end_ = SIZE_MAX;   // last type of the recent epochs that lacked the ender
+  int short_epochs_ = 0;               // how many in a row
+  bool have_emitted_ = false;
+  UtcMs emitted_utc_ms_ = 0;
   std::uint64_t epochs_ = 0;
+  std::uint64_t late_ = 0;
 };
 
 }  // namespace sinu::drivers

@@ -29,6 +29,7 @@ NmeaStreamCounters NmeaStream::counters() const {
   c.sentences.too_long += lexer_.counters().too_long;
   c.framing = lexer_.counters();
   c.fixes = assembler_.epochs();
+  c.late_sentences = assembler_.late_sentences();
   return c;
 }
 

@@ -14,6 +14,7 @@ struct NmeaStreamCounters {
   NmeaCounters sentences;     // parser counters; too_long includes the lexer's
   NmeaLexerCounters framing;  // what the lexer dropped between sentences
   std::uint64_t fixes = 0;    // epochs emitted
+  std::uint64_t late_sentences = 0;  // after their epoch was emitted (FixAssembler)
 };
 
 class NmeaStream {

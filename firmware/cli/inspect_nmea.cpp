@@ -121,6 +121,7 @@ int inspect_nmea(const InspectNmeaOptions& o) {
     }
     counters = counters_json(reader.counters(), fixes, positions);
     counters["skipped_lines"] = reader.log().skipped_lines();
+    counters["late_sentences"] = reader.late_sentences();
     counters["format"] = "gps.nmea";
   } else {
     std::ifstream in(o.file, std::ios::binary);
@@ -137,6 +138,7 @@ int inspect_nmea(const InspectNmeaOptions& o) {
     while (stream.finish(0.0, fix)) emit(fix);
     const auto c = stream.counters();
     counters = counters_json(c.sentences, fixes, positions);
+    counters["late_sentences"] = c.late_sentences;
     counters["interrupted"] = c.framing.interrupted;
     counters["resumed"] = c.framing.resumed;
     counters["noise_bytes"] = c.framing.noise_bytes;

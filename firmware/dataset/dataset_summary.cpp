@@ -46,6 +46,7 @@ bool read_gps(const std::string& path, GpsSummary& s, Diagnostic& err) {
   }
   s.fixes.finish();
   if (st == ReadStatus::Error) return (err = reader.error()), false;
+  s.late_sentences = reader.late_sentences();
   s.lines = reader.log().lines();
   s.skipped_lines = reader.log().skipped_lines();
   s.sentences = reader.counters();
@@ -115,8 +116,10 @@ std::string format_summary(const DatasetSummary& s) {
     o += fmt::format(" (checksum {}, no checksum {}, too long {}, framing {}, bad field {}, bad line {})\n",
                      g.sentences.bad_checksum, g.sentences.missing_checksum, g.sentences.too_long,
                      g.sentences.bad_framing, g.sentences.malformed_field, g.skipped_lines);
-    o += fmt::format("            {} epochs, {} with a position fix ({} with GST sigmas)\n", g.epochs,
-                     g.fixes.count(), g.fixes_with_sigma);
+    o += fmt::format("            {} epochs, {} with a position fix ({} with GST sigmas)", g.epochs, g.fixes.count(),
+                     g.fixes_with_sigma);
+    if (g.late_sentences) o += fmt::format("; {} late or repeated-time sentences dropped", g.late_sentences);
+    o += "\n";
     if (g.fixes.count() > 0) o += rate_line("fixes", g.fixes, "fixes");
     if (!g.first_corrupt.message.empty()) o += "            first corrupt: " + g.first_corrupt.to_string() + "\n";
   } else {
@@ -160,7 +163,8 @@ std::string format_summary_json(const DatasetSummary& s) {
                 {"skipped_lines", g.skipped_lines},
                 {"epochs", g.epochs},
                 {"fixes", rate_json(g.fixes)},
-                {"fixes_with_sigma", g.fixes_with_sigma}};
+                {"fixes_with_sigma", g.fixes_with_sigma},
+                {"late_sentences", g.late_sentences}};
   }
   if (s.truth) j["truth"] = {{"time", rate_json(s.truth->time)}, {"attitude_rows", s.truth->attitude_rows}};
   if (s.meta) j["meta"] = s.meta->object;

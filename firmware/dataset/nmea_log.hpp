@@ -56,6 +56,8 @@ class GpsLogReader {
   ReadStatus next(drivers::GpsFix& fix);
   const NmeaLogReader& log() const { return log_; }
   const drivers::NmeaCounters& counters() const { return parser_.counters(); }
+  /// Sentences that came after their epoch was emitted, or repeated its time (dropped).
+  std::uint64_t late_sentences() const { return assembler_.late_sentences(); }
   /// Corrupt sentences plus skipped lines.
   std::uint64_t corrupt() const { return parser_.counters().corrupt() + log_.skipped_lines(); }
   const Diagnostic& error() const { return log_.error(); }

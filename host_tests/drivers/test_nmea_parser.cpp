@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "drivers/gps/fix_assembler.hpp"
 #include "drivers/gps/nmea_parser.hpp"
@@ -130,6 +131,74 @@ TEST(FixAssembler, GroupsSentencesOfOneEpochAndLearnsTheCycleEnd) {
   EXPECT_EQ(emitted, 2) << "GST ended the previous epoch, so it ends this one at once";
   EXPECT_EQ(fix.utc_ms, 12 * 3600 * 1000 + 200);
   EXPECT_FALSE(a.flush(fix)) << "nothing left open";
+}
+
+/// Feeds one GGA (+ RMC, + GST when `gst`) epoch at UTC 12:00:00 + k/5 s; returns the fixes emitted.
+std::vector<GpsFix> feed_epoch(NmeaParser& p, FixAssembler& a, int k, bool gst) {
+  std::vector<GpsFix> out;
+  char utc[32];
+  std::snprintf(utc, sizeof utc, "1200%02d.%02d", k / 5, (k % 5) * 20);
+  const double t = 10.0 + 0.2 * k;
+  NmeaMessage m;
+  GpsFix fix;
+  auto feed = [&](const std::string& body, double arrival) {
+    EXPECT_EQ(p.parse(with_checksum(body), m), ParseResult::Message) << body;
+    if (a.add(m, arrival, fix)) out.push_back(fix);
+  };
+  feed(std::string("GNGGA,") + utc + ",4000.0000,N,10500.0000,W,1,10,0.9,100.0,M,-20.0,M,,", t);
+  feed(std::string("GNRMC,") + utc + ",A,4000.0000,N,10500.0000,W,10.0,90.0,010126,,,A", t + 0.001);
+  if (gst) feed(std::string("GNGST,") + utc + ",1.0,,,,0.5,0.6,1.5", t + 0.002);
+  return out;
+}
+
+TEST(FixAssembler, AnEpochWithoutGstMakesNoPhantomEpochAndTheNextKeepsItsSigma) {
+  // uav_log171's u-blox skips GST in some epochs: the assembler once emitted
+  // the next epoch at its RMC, then opened a GST-only "epoch" (977 epochs for
+  // 960 fixes) and lost that GST.
+  NmeaParser p;
+  FixAssembler a;
+  std::vector<GpsFix> fixes;
+  const bool gst[] = {true, true, false, true, true, false, true, true};
+  for (int k = 0; k < 8; ++k)
+    for (const GpsFix& f : feed_epoch(p, a, k, gst[k])) fixes.push_back(f);
+  GpsFix last;
+  if (a.flush(last)) fixes.push_back(last);
+  ASSERT_EQ(fixes.size(), 8u) << "one fix per receiver epoch";
+  for (std::size_t k = 0; k < fixes.size(); ++k) {
+    EXPECT_EQ(fixes[k].utc_ms, 12 * 3600 * 1000 + 200 * static_cast<long>(k));
+    EXPECT_TRUE(fixes[k].has_position());
+    EXPECT_EQ(fixes[k].has_gst, gst[k]) << "epoch " << k << " keeps exactly its own GST";
+  }
+  EXPECT_EQ(a.late_sentences(), 0u);
+}
+
+TEST(FixAssembler, AReceiverThatStopsSendingGstIsFollowedAfterThreeEpochs) {
+  NmeaParser p;
+  FixAssembler a;
+  for (int k = 0; k < 3; ++k) feed_epoch(p, a, k, true);
+  // From epoch 3 on no GST: each epoch is first closed by the next one's GGA,
+  // until the learned ender is lowered to RMC; then it is emitted at its RMC.
+  std::size_t emitted_at_own_rmc = 0;
+  for (int k = 3; k < 10; ++k) {
+    const auto out = feed_epoch(p, a, k, false);
+    for (const GpsFix& f : out) {
+      if (f.utc_ms == 12 * 3600 * 1000 + 200 * k) ++emitted_at_own_rmc;
+    }
+  }
+  EXPECT_EQ(emitted_at_own_rmc, 4u) << "epochs 3-5 wait for the next one, 6-9 are emitted at their RMC";
+}
+
+TEST(FixAssembler, ASentenceAfterTheLearnedEnderIsCountedLateAndRaisesTheEnder) {
+  NmeaParser p;
+  FixAssembler a;
+  feed_epoch(p, a, 0, false);  // closed by epoch 1's GGA: RMC learned as the ender
+  EXPECT_EQ(feed_epoch(p, a, 1, false).size(), 2u) << "epoch 0 closed by time, epoch 1 at its RMC";
+  EXPECT_EQ(feed_epoch(p, a, 2, true).size(), 1u) << "epoch 2 at its RMC";
+  EXPECT_EQ(a.late_sentences(), 1u) << "epoch 2's GST came after it was emitted";
+  const auto out = feed_epoch(p, a, 3, true);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].has_gst) << "GST is now the ender: epoch 3 waits for it";
+  EXPECT_EQ(a.late_sentences(), 1u);
 }
 
 TEST(FixAssembler, NoFixWhenQualityIsZero) {
