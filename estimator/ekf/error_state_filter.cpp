@@ -32,16 +32,29 @@ void ErrorStateFilter::init(const StateLayout& layout, const SensorNoise& noise,
     const double sig = tuning.initial_sigma[i];
     for (Eigen::Index j = 0; j < s.size; ++j) P_(s.start + j, s.start + j) = sig * sig;
   }
-  if (layout.has(Effect::GpsPositionBias)) {
-    const Eigen::Index b = layout.of(Effect::GpsPositionBias).start;
-    P_.block(b, b, 3, 3) = tuning.gps_bias_sigma_ned_m.cwiseAbs2().asDiagonal();
-  }
+  gps_bias_sigma_ned_m_ = Eigen::Vector3d::Constant(tuning.sigma(Effect::GpsPositionBias));
   gps_bias_ned_.setZero();
   mag_field_n_.setZero();
   mag_hard_iron_b_.setZero();
   mag_soft_iron_.setZero();
   sensor_hat_ = StateVec::Zero(layout.sensor.size);
   ar_clock_s_ = 0.0;
+}
+
+void ErrorStateFilter::activate_deferred() {
+  if (!layout_.has_deferred()) return;
+  const Eigen::Index n = layout_.dim;
+  const StateLayout before = layout_;
+  layout_.activate_deferred();
+  const StateMat old = P_;
+  P_ = StateMat::Zero(layout_.dim, layout_.dim);
+  P_.topLeftCorner(n, n) = old.topLeftCorner(n, n);
+  for (std::size_t i = 0; i < kEffectCount; ++i) {
+    const Slice& s = layout_.effect[i];
+    if (before.effect[i].active() || !s.active()) continue;
+    const double sig = tuning_.initial_sigma[i];
+    for (Eigen::Index j = 0; j < s.size; ++j) P_(s.start + j, s.start + j) = sig * sig;
+  }
 }
 
 void ErrorStateFilter::build_transition(const PredictInput& in, int ar_steps, StateMat& Phi, StateVec& q) const {
@@ -77,6 +90,12 @@ void ErrorStateFilter::build_transition(const PredictInput& in, int ar_steps, St
   couple(Effect::GyroBias, A, -1.0, Eigen::Vector3d::Ones());
   couple(Effect::AccelTempBias, V, 1.0, Eigen::Vector3d::Constant(in.temp_delta_degC));
   couple(Effect::GyroTempBias, A, -1.0, Eigen::Vector3d::Constant(in.temp_delta_degC));
+  if (L.has(Effect::MagEarthField)) {  // e = dF + [F x] phi moves with phi: e_k+1 = e_k + [F x] (phi_k+1 - phi_k)
+    const Eigen::Index M = L.of(Effect::MagEarthField).start;
+    Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxStates> dphi = Phi.middleRows(A, 3);
+    dphi.middleCols(A, 3) -= Eigen::Matrix3d::Identity();
+    Phi.middleRows(M, 3) += skew(mag_field_n_) * dphi;
+  }
 
   const double na = noise_.accel_white_m_s2_rthz, ng = noise_.gyro_white_rad_s_rthz;
   q.segment(V, 3).setConstant(na * na * dt);
@@ -112,7 +131,7 @@ void ErrorStateFilter::build_transition(const PredictInput& in, int ar_steps, St
     const double phi = std::exp(-dt / tuning_.gps_bias_tau_s);
     for (Eigen::Index j = 0; j < 3; ++j) {
       Phi(b + j, b + j) = phi;
-      q(b + j) = tuning_.gps_bias_sigma_ned_m(j) * tuning_.gps_bias_sigma_ned_m(j) * (1.0 - phi * phi);
+      q(b + j) = gps_bias_sigma_ned_m_(j) * gps_bias_sigma_ned_m_(j) * (1.0 - phi * phi);
     }
   }
 }
@@ -131,6 +150,12 @@ void ErrorStateFilter::predict(const PredictInput& in) {
   StateVec q;
   build_transition(in, ar_steps, Phi, q);
   propagate_covariance(P_, Phi, q);
+  if (layout_.has(Effect::MagEarthField)) {
+    // The attitude's white noise reaches the invariant field error too (e += [F x] w).
+    const Slice& A = layout_.att;
+    const double qa = q(A.start);
+    add_field_coupled_noise(Eigen::Matrix3d::Identity() * qa, /*attitude_block_too=*/false);
+  }
   // Mean of the sensor-error states follows the same linear dynamics.
   const Eigen::Index S = layout_.sensor.start;
   const Eigen::Index m = layout_.sensor.size;
@@ -149,24 +174,23 @@ void ErrorStateFilter::start_mag_field(const NavState& nav, const Eigen::Vector3
   const Eigen::Matrix3d C = nav.C_nb();
   mag_field_n_ = C * mag_soft_iron().inverse() * (mag_b_uT - mag_hard_iron_b_);
   if (!layout_.has(Effect::MagEarthField)) return;
-  // F_hat = C_hat (m - h) with C_hat = (I - [phi x]) C: dF = F - F_hat = -[F x] phi
-  // (+ C dh + noise), so P_FF = [F x] P_phi [F x]^T + ..., P_F,x = -[F x] P_phi,x.
-  const Eigen::Index F = layout_.of(Effect::MagEarthField).start, A = layout_.att.start;
-  const Eigen::Matrix3d J = -skew(mag_field_n_);
+  // F = C (m - h - n) and F_hat = C_hat (m - h_hat), C_hat = (I - [phi x]) C, so with
+  // dh = h - h_hat: dF = -[F x] phi - C dh - C n, and the invariant error
+  // e = dF + [F x] phi = -C dh - C n, uncorrelated with the attitude:
+  // P_e,x = -C P_h,x, P_ee = C P_hh C^T + noise. (The first innovation is then
+  // the sensor noise alone: one sample teaches nothing yet.)
+  const Eigen::Index F = layout_.of(Effect::MagEarthField).start;
   P_.middleRows(F, 3).setZero();
   P_.middleCols(F, 3).setZero();
-  const StateMat row = J * P_.middleRows(A, 3);  // 3 x n
-  P_.middleRows(F, 3) = row;
-  P_.middleCols(F, 3) = row.transpose();
-  Eigen::Matrix3d PFF = J * P_.block(A, A, 3, 3) * J.transpose();
-  PFF.diagonal().array() += noise_sigma_uT * noise_sigma_uT;
+  Eigen::Matrix3d Pee = Eigen::Matrix3d::Identity() * (noise_sigma_uT * noise_sigma_uT);
   if (layout_.has(Effect::MagHardIron)) {
     const Eigen::Index H = layout_.of(Effect::MagHardIron).start;
-    PFF += C * P_.block(H, H, 3, 3) * C.transpose();
-    P_.block(F, H, 3, 3) = C * P_.block(H, H, 3, 3);
-    P_.block(H, F, 3, 3) = P_.block(F, H, 3, 3).transpose();
+    const StateMat row = -C * P_.middleRows(H, 3);  // 3 x n
+    P_.middleRows(F, 3) = row;
+    P_.middleCols(F, 3) = row.transpose();
+    Pee -= row.middleCols(H, 3) * C.transpose();
   }
-  P_.block(F, F, 3, 3) = PFF;
+  P_.block(F, F, 3, 3) = 0.5 * (Pee + Pee.transpose());
 }
 
 void ErrorStateFilter::feedback(StateVec& dx, NavState& nav) {
@@ -191,7 +215,17 @@ void ErrorStateFilter::feedback(StateVec& dx, NavState& nav) {
   add3(Effect::AccelBias, accel_bias_);
   add3(Effect::GyroBias, gyro_bias_);
   add3(Effect::GpsPositionBias, gps_bias_ned_);
-  add3(Effect::MagEarthField, mag_field_n_);
+  if (L.has(Effect::MagEarthField)) {
+    // e = dF + [F x] phi: the field turns with the attitude correction (exactly,
+    // as the attitude does), and so does its error, a navigation-frame vector
+    // (the reset Jacobian: without it a large heading correction leaves the
+    // field's covariance pointing the old way and the next turns diverge).
+    const Eigen::Vector3d phi = dx.segment(L.att.start, 3);
+    const Eigen::Matrix3d R = quat_from_rotation_vector(phi).toRotationMatrix();
+    mag_field_n_ = R * mag_field_n_ + dx.segment(L.of(Effect::MagEarthField).start, 3);
+    rotate_block(L.of(Effect::MagEarthField), R);
+  }
+
   add3(Effect::MagHardIron, mag_hard_iron_b_);
   if (L.has(Effect::MagSoftIron)) mag_soft_iron_ += dx.segment(L.of(Effect::MagSoftIron).start, 6);
   if (L.has(Effect::GpsLatency)) latency_s_ += dx(L.of(Effect::GpsLatency).start);
@@ -213,13 +247,121 @@ BodyRates ErrorStateFilter::compensate(const ImuSample& raw) const {
   return out;
 }
 
+void ErrorStateFilter::set_gps_bias_sigma(const Eigen::Vector3d& fix_sigma_ned_m, double dt_s) {
+  const Eigen::Vector3d target = std::sqrt(tuning_.gps_bias_variance_fraction) * fix_sigma_ned_m;
+  if (!(dt_s > 0.0)) {  // the first fix: the GM starts in its stationary distribution
+    gps_bias_sigma_ned_m_ = target;
+    if (layout_.has(Effect::GpsPositionBias)) reset_block(layout_.of(Effect::GpsPositionBias), target);
+    return;
+  }
+  // Later fixes move the GM's level at its own pace (variance averaged over tau).
+  const double a = std::min(1.0, dt_s / tuning_.gps_bias_tau_s);
+  const Eigen::Vector3d var = gps_bias_sigma_ned_m_.cwiseAbs2() + a * (target.cwiseAbs2() - gps_bias_sigma_ned_m_.cwiseAbs2());
+  gps_bias_sigma_ned_m_ = var.cwiseSqrt();
+}
+
+void ErrorStateFilter::add_axis_states(Eigen::Index axis, StateMask& mask) const {
+  const StateLayout& L = layout_;
+  for (Eigen::Index j = 0; j < L.order; ++j) mask.set(static_cast<std::size_t>(L.sensor_state(axis) + j));
+  const bool accel = axis < sensor_axis::kFirstGyro;
+  const Eigen::Index i = axis % 3;
+  for (const Effect e : accel ? std::array{Effect::AccelBias, Effect::AccelScale, Effect::AccelTempBias}
+                              : std::array{Effect::GyroBias, Effect::GyroScale, Effect::GyroTempBias}) {
+    if (L.has(e)) mask.set(static_cast<std::size_t>(L.of(e).start + i));
+  }
+}
+
+void ErrorStateFilter::rotate_block(const Slice& block, const Eigen::Matrix3d& G) {
+  const Eigen::Index b = block.start;
+  const StateMat rows = G * P_.middleRows(b, 3);  // 3 x n
+  P_.middleRows(b, 3) = rows;
+  P_.middleCols(b, 3) = rows.transpose();
+  P_.block(b, b, 3, 3) = rows.middleCols(b, 3) * G.transpose();
+}
+
+void ErrorStateFilter::add_block_noise(const Slice& block, const Eigen::Matrix3d& Q) {
+  if (block.start == layout_.att.start && layout_.has(Effect::MagEarthField)) {
+    add_field_coupled_noise(Q, true);
+    return;
+  }
+  P_.block(block.start, block.start, 3, 3) += 0.5 * (Q + Q.transpose());
+}
+
+void ErrorStateFilter::add_field_coupled_noise(const Eigen::Matrix3d& Q_att, bool attitude_block_too) {
+  const Eigen::Index A = layout_.att.start, M = layout_.of(Effect::MagEarthField).start;
+  const Eigen::Matrix3d Q = 0.5 * (Q_att + Q_att.transpose());
+  const Eigen::Matrix3d Fx = skew(mag_field_n_);
+  if (attitude_block_too) P_.block(A, A, 3, 3) += Q;
+  P_.block(M, M, 3, 3) += Fx * Q * Fx.transpose();
+  P_.block(M, A, 3, 3) += Fx * Q;
+  P_.block(A, M, 3, 3) += Q * Fx.transpose();
+}
+
+void ErrorStateFilter::reset_block(const Slice& block, const Eigen::Vector3d& sigma) {
+  P_.middleRows(block.start, 3).setZero();
+  P_.middleCols(block.start, 3).setZero();
+  for (Eigen::Index i = 0; i < 3; ++i) P_(block.start + i, block.start + i) = sigma(i) * sigma(i);
+}
+
+void ErrorStateFilter::reset_yaw(NavState& nav, double dyaw_rad, double sigma_rad) {
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(dyaw_rad, Eigen::Vector3d::UnitZ()));
+  nav.q_nb = (turn * nav.q_nb).normalized();
+  // The field turns with the solution: the invariant field error (state_layout.hpp) is unchanged.
+  mag_field_n_ = turn * mag_field_n_;
+  if (layout_.has(Effect::MagEarthField)) rotate_block(layout_.of(Effect::MagEarthField), turn.toRotationMatrix());
+  const Eigen::Index d = layout_.att.start + 2;
+  P_.row(d).setZero();
+  P_.col(d).setZero();
+  P_(d, d) = sigma_rad * sigma_rad;
+}
+
+void ErrorStateFilter::seed_attitude(const Eigen::Vector3d& att_sigma_rad) {
+  reset_block(layout_.att, att_sigma_rad);
+}
+
+void ErrorStateFilter::seed_accel_bias_at_rest(const NavState& nav, const Eigen::Vector3d& f_b, double g,
+                                               double sigma_along) {
+  if (!layout_.has(Effect::AccelBias) || !(f_b.norm() > 0.0)) return;
+  const Slice& B = layout_.of(Effect::AccelBias);
+  const Eigen::Vector3d u = f_b.normalized();  // "up" in the body frame
+  // The along-gravity part is measured; the rest keeps its prior.
+  accel_bias_ = accel_bias_ - u * u.dot(accel_bias_) + u * (f_b.norm() - g);
+  const Eigen::Matrix3d Pb_prior = P_.block(B.start, B.start, 3, 3);
+  const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - u * u.transpose();
+  double coloured = 0.0;  // the coloured error at rest is in the mean too (as for the gyro)
+  for (Eigen::Index i = 0; i < 3; ++i) {
+    const Eigen::Index c = layout_.sensor_state(sensor_axis::kFirstAccel + i);
+    coloured = std::max(coloured, P_(c, c));
+  }
+  const Eigen::Matrix3d Pb =
+      across * Pb_prior * across + (sigma_along * sigma_along + coloured) * u * u.transpose();
+  // Tilt error made by the levelling from the horizontal bias error.
+  const Eigen::Matrix3d C = nav.C_nb();
+  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+  M.row(0) = C.row(1) / g;
+  M.row(1) = -C.row(0) / g;
+  const Slice& A = layout_.att;
+  const Eigen::Matrix3d Paa_before = P_.block(A.start, A.start, 3, 3);  // seed_attitude's: noise, gyro carry, yaw
+  reset_block(B, Eigen::Vector3d::Zero());
+  P_.block(B.start, B.start, 3, 3) = Pb;
+  reset_block(A, Eigen::Vector3d::Zero());
+  P_.block(A.start, A.start, 3, 3) = Paa_before + M * Pb * M.transpose();
+  P_.block(A.start, B.start, 3, 3) = M * Pb;
+  P_.block(B.start, A.start, 3, 3) = (M * Pb).transpose();
+}
+
 double ErrorStateFilter::sensor_error(Eigen::Index axis) const { return sensor_hat_(hat_index(axis)); }
 
 void ErrorStateFilter::seed_gyro_bias(const Eigen::Vector3d& bias, double sigma) {
   if (layout_.has(Effect::GyroBias)) {
     gyro_bias_ = bias;
     const Eigen::Index s = layout_.of(Effect::GyroBias).start;
-    for (Eigen::Index i = 0; i < 3; ++i) P_(s + i, s + i) = std::min(P_(s + i, s + i), sigma * sigma);
+    for (Eigen::Index i = 0; i < 3; ++i) {
+      // The window's mean also holds the coloured error of that moment, which
+      // the sensor states model as zero-mean: count its variance too.
+      const Eigen::Index c = layout_.sensor_state(sensor_axis::kFirstGyro + i);
+      P_(s + i, s + i) = std::min(P_(s + i, s + i), sigma * sigma + P_(c, c));
+    }
     return;
   }
   const Eigen::Index p = layout_.order;

@@ -58,16 +58,47 @@ class ErrorStateFilter {
   Eigen::Vector3d lever_arm_b_m() const { return lever_arm_b_; }
   double gps_latency_s() const { return latency_s_; }
   Eigen::Vector3d gps_position_bias_ned_m() const { return gps_bias_ned_; }
+  /// The GM sigma of the receiver's correlated error, per NED axis.
+  Eigen::Vector3d gps_bias_sigma_ned_m() const { return gps_bias_sigma_ned_m_; }
+  /// Sets the correlated error's level from a fix's stated sigma (its
+  /// tuning fraction): at once (and P with it) when dt_s <= 0, else averaged.
+  void set_gps_bias_sigma(const Eigen::Vector3d& fix_sigma_ned_m, double dt_s);
   Eigen::Vector3d mag_earth_field_n_uT() const { return mag_field_n_; }
   Eigen::Vector3d mag_hard_iron_b_uT() const { return mag_hard_iron_b_; }
   /// Soft-iron matrix I + D (identity without the mag_soft_iron states).
   Eigen::Matrix3d mag_soft_iron() const;
   const EffectTuning& tuning() const { return tuning_; }
 
+  /// Switches the layout's deferred effects on: P grows by their states, with
+  /// their prior variances and no correlation with the rest.
+  void activate_deferred();
+
   /// Starts the magnetometer model from one sample: F_n = C_nb (m_b - h_b),
-  /// with the uncertainty (and the attitude correlation) that the current
-  /// attitude error and the sample's noise give it.
+  /// with the uncertainty the hard iron and the sample's noise give it (none
+  /// from the attitude: the field error is the invariant one).
   void start_mag_field(const NavState& nav, const Eigen::Vector3d& mag_b_uT, double noise_sigma_uT);
+
+  /// The states of sensor axis `axis` (ax..gz): its GM/AR block and its
+  /// components of the per-axis effects (bias, scale, temperature).
+  void add_axis_states(Eigen::Index axis, StateMask& mask) const;
+  /// Adds a navigation-frame covariance to a 3-state block (velocity or
+  /// attitude): process noise the model does not carry (clipping, a gap).
+  void add_block_noise(const Slice& block, const Eigen::Matrix3d& Q);
+  /// Resets a 3-state block: no correlation with anything, variances sigma^2.
+  void reset_block(const Slice& block, const Eigen::Vector3d& sigma);
+  /// Turns the solution about down by dyaw [rad] (a yaw reset): the attitude
+  /// down error becomes uncorrelated with variance sigma^2, the Earth-field
+  /// estimate turns with the body so the magnetometer stays consistent.
+  void reset_yaw(NavState& nav, double dyaw_rad, double sigma_rad);
+
+  /// Attitude prior after an alignment: tilt and yaw sigmas; at rest, also
+  /// the accelerometer bias along gravity measured by the levelling
+  /// (|f| - g along f: the bias's only observable part at rest) and the
+  /// correlation the levelling puts between tilt and the horizontal bias
+  /// (C_hat f stays vertical: phi_n = (C db)_e / g, phi_e = -(C db)_n / g).
+  void seed_attitude(const Eigen::Vector3d& att_sigma_rad);
+  void seed_accel_bias_at_rest(const NavState& nav, const Eigen::Vector3d& mean_specific_force_b_m_s2,
+                               double gravity_m_s2, double sigma_along_m_s2);
 
   /// Seeds the gyro bias measured at rest and its uncertainty [rad/s]: into
   /// the gyro_bias states when active, else into the sensor-error states
@@ -80,6 +111,10 @@ class ErrorStateFilter {
 
  private:
   Eigen::Index hat_index(Eigen::Index axis) const { return axis * layout_.order; }
+  /// P <- G P G^T for a 3-state block: a reset Jacobian.
+  void rotate_block(const Slice& block, const Eigen::Matrix3d& G);
+  /// Attitude noise Q_att with what it does to the invariant field error.
+  void add_field_coupled_noise(const Eigen::Matrix3d& Q_att, bool attitude_block_too);
   void build_transition(const PredictInput& in, int ar_steps, StateMat& Phi, StateVec& q) const;
 
   StateLayout layout_;
@@ -94,6 +129,7 @@ class ErrorStateFilter {
   Eigen::Vector3d accel_bias_ = Eigen::Vector3d::Zero(), gyro_bias_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d lever_arm_b_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d gps_bias_ned_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gps_bias_sigma_ned_m_ = Eigen::Vector3d::Ones();
   Eigen::Vector3d mag_field_n_ = Eigen::Vector3d::Zero(), mag_hard_iron_b_ = Eigen::Vector3d::Zero();
   Eigen::Matrix<double, 6, 1> mag_soft_iron_ = Eigen::Matrix<double, 6, 1>::Zero();  // D xx yy zz xy xz yz
   double latency_s_ = 0.0;

@@ -7,7 +7,7 @@
 
 namespace sinu::est {
 
-UpdateResult fuse_measurement(StateMat& P, StateVec& dx, const Measurement& m) {
+UpdateResult fuse_measurement(StateMat& P, StateVec& dx, const Measurement& m, const StateMask& frozen) {
   const Eigen::Index n = P.rows();
   const Eigen::Index rows = m.innovation.rows();
   UpdateResult r;
@@ -44,6 +44,10 @@ UpdateResult fuse_measurement(StateMat& P, StateVec& dx, const Measurement& m) {
   // K = P H^T S^-1
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxMeasurementRows, kMaxStates> KT(rows, n);
   KT = llt.solve(PHt.transpose());
+  if (frozen.any()) {
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (frozen.test(static_cast<std::size_t>(k))) KT.col(k).setZero();
+  }
   dx.noalias() = KT.transpose() * m.innovation;
 
   // Joseph form, expanded so it costs n^2 m instead of n^3 (same algebra for

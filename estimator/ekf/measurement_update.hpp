@@ -33,6 +33,8 @@ struct UpdateResult {
 
 /// Computes the test; when it passes, updates P and sets dx = K y (the
 /// error-state estimate, to be fed back by the caller). dx is zero otherwise.
-UpdateResult fuse_measurement(StateMat& P, StateVec& dx, const Measurement& m);
+/// States in `frozen` get a zero gain (they learn nothing from this update,
+/// PX4's inhibited states); the Joseph form keeps P right for that gain.
+UpdateResult fuse_measurement(StateMat& P, StateVec& dx, const Measurement& m, const StateMask& frozen = {});
 
 }  // namespace sinu::est

@@ -1,5 +1,6 @@
 #include "estimator/ekf/state_layout.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 namespace sinu::est {
@@ -22,7 +23,7 @@ const char* effect_component_name(Effect e, Eigen::Index i) {
   return dims == 6 ? kSymmetric[i] : kXyz[i];
 }
 
-StateLayout StateLayout::make(Eigen::Index order, EffectSet effects) {
+StateLayout StateLayout::make(Eigen::Index order, EffectSet effects, EffectSet deferred) {
   StateLayout l;
   l.order = order < 1 ? 1 : (order > kMaxArOrder ? kMaxArOrder : order);
   Eigen::Index next = 0;
@@ -36,10 +37,29 @@ StateLayout StateLayout::make(Eigen::Index order, EffectSet effects) {
   l.att = take(3);
   l.sensor = take(kSensorAxes * l.order);
   for (std::size_t i = 0; i < kEffectCount; ++i) {
-    if (effects.has(static_cast<Effect>(i))) l.effect[i] = take(kEffectDims[i]);
+    const auto e = static_cast<Effect>(i);
+    if (effects.has(e) && !deferred.has(e)) l.effect[i] = take(kEffectDims[i]);
   }
   l.dim = next;
+  for (std::size_t i = 0; i < kEffectCount; ++i) {
+    if (deferred.has(static_cast<Effect>(i))) l.reserved[i] = take(kEffectDims[i]);
+  }
   return l;
+}
+
+bool StateLayout::has_deferred() const {
+  for (const Slice& s : reserved)
+    if (s.active()) return true;
+  return false;
+}
+
+void StateLayout::activate_deferred() {
+  for (std::size_t i = 0; i < kEffectCount; ++i) {
+    if (!reserved[i].active()) continue;
+    effect[i] = reserved[i];
+    dim = std::max(dim, reserved[i].start + reserved[i].size);
+    reserved[i] = Slice{};
+  }
 }
 
 }  // namespace sinu::est

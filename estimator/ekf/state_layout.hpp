@@ -10,7 +10,16 @@
 //   att  phi  C_nb_hat = (I - [phi x]) C_nb  [rad]
 //   sensor states, scale, temperature coefficients, lever arm, latency:
 //        true - estimated (feedback adds them to the estimate)
+//   mag_earth_field  e = dF + [F_hat x] phi, dF = F - F_hat: the field's error
+//        as the body's attitude estimate sees it. A rotation of the whole
+//        solution (attitude and field together) leaves e unchanged, so the
+//        magnetometer, which cannot see such a rotation while the field is a
+//        state, never claims absolute attitude: that information comes from
+//        gravity and GNSS motion only. (With dF instead, every field update
+//        turned the unobservable direction and the filter grew confident of
+//        a heading it could not know: 20 -> 4 deg in a second at rest.)
 #include <array>
+#include <bitset>
 #include <cstdint>
 #include <Eigen/Core>
 
@@ -54,6 +63,9 @@ inline constexpr Eigen::Index kMaxStates = kNavStates + kSensorAxes * kMaxArOrde
 using StateVec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxStates, 1>;
 using StateMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxStates, kMaxStates>;
 
+/// A set of states (bit = state index): the states a measurement may not correct.
+using StateMask = std::bitset<static_cast<std::size_t>(kMaxStates)>;
+
 struct Slice {
   Eigen::Index start = 0;
   Eigen::Index size = 0;
@@ -65,6 +77,7 @@ struct EffectSet {
   std::uint32_t bits = 0;
   bool has(Effect e) const { return (bits >> static_cast<unsigned>(e)) & 1u; }
   void add(Effect e) { bits |= 1u << static_cast<unsigned>(e); }
+  void remove(Effect e) { bits &= ~(1u << static_cast<unsigned>(e)); }
 };
 
 /// Name of component i of an effect's states: "" (one state), x/y/z, or
@@ -74,20 +87,32 @@ const char* effect_component_name(Effect e, Eigen::Index i);
 /// Looks an effect up by its vocabulary name; false if unknown.
 bool effect_from_name(const char* name, std::size_t length, Effect& out);
 
+/// Where every state lives. Effects can be deferred (PX4 EKF2 reserves its
+/// magnetometer states the same way): their slices are reserved after all
+/// others but stay inactive, outside `dim`, until activate_deferred()
+/// switches them on (the magnetometer's first sample), so nothing has to read
+/// the data ahead to decide the layout and nothing pays for unused states.
 struct StateLayout {
   Slice pos, vel, att;
   Slice sensor;              // kSensorAxes blocks of `order` states each
   Eigen::Index order = 1;    // states per sensor axis: 1 (GM) or p (AR(p))
-  std::array<Slice, kEffectCount> effect{};
-  Eigen::Index dim = 0;
+  std::array<Slice, kEffectCount> effect{};    // active effects
+  std::array<Slice, kEffectCount> reserved{};  // deferred effects, not yet active
+  Eigen::Index dim = 0;      // active states
 
   /// First state of a sensor axis block: the axis's current error.
   Eigen::Index sensor_state(Eigen::Index axis) const { return sensor.start + axis * order; }
   const Slice& of(Effect e) const { return effect[static_cast<std::size_t>(e)]; }
   bool has(Effect e) const { return of(e).active(); }
+  /// Active, or reserved for activation.
+  bool carries(Effect e) const { return has(e) || reserved[static_cast<std::size_t>(e)].active(); }
+  bool has_deferred() const;
+  /// Switches every deferred effect on (they are the last slices: dim grows).
+  void activate_deferred();
 
-  /// order in 1..kMaxArOrder.
-  static StateLayout make(Eigen::Index order, EffectSet effects);
+  /// order in 1..kMaxArOrder; `deferred` effects (also in `effects` or not)
+  /// are reserved at the end and inactive until activate_deferred().
+  static StateLayout make(Eigen::Index order, EffectSet effects, EffectSet deferred = {});
 };
 
 }  // namespace sinu::est

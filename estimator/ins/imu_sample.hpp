@@ -1,6 +1,7 @@
 #pragma once
 // One IMU sample at instant t: the sensor output at that instant (dataset
 // contract: not an increment). Body frame FRD.
+#include <cstdint>
 #include <Eigen/Core>
 
 namespace sinu::est {
@@ -13,6 +14,7 @@ struct ImuSample {
   double temp_degC = 0.0;
   bool has_mag = false;
   bool has_temp = false;
+  std::uint8_t clipped_axes = 0;  // bit a: axis a (ax ay az gx gy gz) at full scale, set by the navigator's screen
 };
 
 }  // namespace sinu::est

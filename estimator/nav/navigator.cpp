@@ -1,6 +1,10 @@
 #include "estimator/nav/navigator.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include "estimator/ins/rotation.hpp"
 
 #include "estimator/earth/wgs84.hpp"
 #include "estimator/ekf/aiding/gnss_position/gnss_position.hpp"
@@ -10,7 +14,25 @@
 namespace sinu::est {
 
 namespace {
-constexpr double kUngated = 1e9;  // gate [sigma] that accepts any finite innovation
+
+constexpr double kNever = -1e300;
+
+/// The layout the configuration asks for: the magnetometer's states reserved
+/// (deferred) when it is to be used, dropped when not.
+StateLayout layout_of(const NavigatorConfig& cfg) {
+  EffectSet effects = cfg.effects, deferred;
+  const Effect mag[] = {Effect::MagEarthField, Effect::MagHardIron, Effect::MagSoftIron};
+  if (cfg.use_mag) {
+    effects.add(Effect::MagEarthField);  // the 3-axis model needs both (PX4 EKF2 likewise)
+    effects.add(Effect::MagHardIron);
+    for (const Effect e : mag)
+      if (effects.has(e)) deferred.add(e);
+  } else {
+    for (const Effect e : mag) effects.remove(e);
+  }
+  return StateLayout::make(cfg.noise.order(), effects, deferred);
+}
+
 }  // namespace
 
 void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefilter* prefilter) {
@@ -19,38 +41,66 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   prefilter_ = prefilter ? prefilter : &pass_through_;
   imu_.clear();
   gnss_.clear();
+  screen_.configure(cfg.screen);
   alignment_.configure(cfg.alignment);
-  have_prev_ = false;
-  have_raw_ = false;
-  mag_started_ = false;
+  recovery_.configure(cfg.recovery);
+  vel_noise_started_ = false;
+  mag_noise_.configure(cfg.mag_noise, cfg.mag_sigma_uT);
+  have_prev_ = have_raw_ = mag_started_ = in_timeout_ = false;
+  raw_period_s_ = period_s_ = horizontal_accel_m_s2_ = 0.0;
+  clip_until_t_s_.fill(kNever);
+  last_clip_t_s_.fill(kNever);
+  clip_run_.fill(0);
+  frozen_.reset();
+  events_ = state_flags_ = 0;
+  test_ratio_.fill(0.0);
   predict_.clear();
   counters_ = {};
   nav_ = {};
-  filter_.init(StateLayout::make(cfg.noise.order(), cfg.effects), cfg.noise, cfg.tuning, cfg.initial);
+  filter_.init(layout_of(cfg), cfg.noise, cfg.tuning, cfg.initial);
   filter_.set_lever_arm(cfg.lever_arm_b_m);
   filter_.set_gps_latency(cfg.gps_latency_s);
   dx_ = StateVec::Zero(filter_.layout().dim);
 }
 
 void Navigator::push_imu(const ImuSample& raw) {
-  // Checked before the prefilter: one NaN would poison a wavelet's registers.
-  if (!raw.specific_force_b_m_s2.allFinite() || !raw.angular_rate_b_rad_s.allFinite()) {
-    ++counters_.imu_invalid;
-    return;
+  // Screened before the prefilter: one NaN would poison a wavelet's registers.
+  ImuSample s = raw;
+  switch (screen_.screen(raw, s.clipped_axes)) {
+    case ScreenVerdict::NonFinite:
+      ++counters_.imu_invalid;
+      events_ |= nav_flag::kImuDropped;
+      return;
+    case ScreenVerdict::NotIncreasing:
+      ++counters_.imu_non_increasing;
+      events_ |= nav_flag::kImuDropped;
+      return;
+    case ScreenVerdict::Keep: break;
   }
-  if (have_raw_ && !(raw.t_s > last_raw_t_s_)) {
-    ++counters_.imu_non_increasing;
-    return;
+  if (have_raw_) {  // nominal raw period: gaps and repeats do not move it
+    const double dt = raw.t_s - last_raw_t_s_;
+    if (raw_period_s_ == 0.0 || dt < 0.5 * raw_period_s_) raw_period_s_ = dt;
+    else if (dt < 2.0 * raw_period_s_) raw_period_s_ += 0.02 * (dt - raw_period_s_);
   }
   have_raw_ = true;
   last_raw_t_s_ = raw.t_s;
-  ImuSample s;
-  if (prefilter_->push(raw, s)) push_filtered(s);
+  if (s.clipped_axes) {
+    ++counters_.imu_clipped_samples;
+    // A clipped input reaches every prefilter output up to its delay later.
+    const double reach = raw.t_s + prefilter_->delay_samples() * raw_period_s_ + 1e-9;
+    for (std::size_t a = 0; a < kSensorAxes; ++a)
+      if ((s.clipped_axes >> a) & 1u) clip_until_t_s_[a] = reach;
+  }
+  ImuSample out;
+  if (prefilter_->push(s, out)) push_filtered(out);
 }
 
-void Navigator::push_filtered(const ImuSample& s) {
+void Navigator::push_filtered(ImuSample s) {
+  for (std::size_t a = 0; a < kSensorAxes; ++a)
+    if (s.t_s <= clip_until_t_s_[a]) s.clipped_axes |= static_cast<std::uint8_t>(1u << a);
   if (!imu_.empty() && !(s.t_s > imu_.back().t_s)) {
     ++counters_.imu_non_increasing;
+    events_ |= nav_flag::kImuDropped;
     return;
   }
   if (imu_.full()) {  // horizon longer than the buffer: process the oldest now
@@ -84,23 +134,16 @@ void Navigator::process(const ImuSample& s) {
     return;
   }
   const double dt = s.t_s - prev_.t_s;
-  if (dt > cfg_.max_imu_gap_s) ++counters_.imu_gaps;
-
+  if (period_s_ == 0.0 || dt < 0.5 * period_s_) period_s_ = dt;
+  else if (dt < 2.0 * period_s_) period_s_ += 0.02 * (dt - period_s_);
+  if (dt > cfg_.gap_periods * period_s_) {
+    ++counters_.imu_gaps;
+    counters_.imu_gap_total_s += dt;
+    counters_.imu_longest_gap_s = std::max(counters_.imu_longest_gap_s, dt);
+    events_ |= nav_flag::kImuGap;
+  }
   if (!aligned()) {
-    alignment_.add_imu(s, dt);
-    AlignmentResult res;
-    const double latency = filter_.gps_latency_s();
-    while (!gnss_.empty() && gnss_.front().arrival_s - latency <= s.t_s) {
-      const GnssObservation z = gnss_.front();
-      gnss_.pop();
-      if (alignment_.add_gnss(z, s.t_s, res)) {
-        nav_ = res.nav;
-        last_position_accepted_t_ = s.t_s;
-        filter_.seed_gyro_bias(res.gyro_bias_rad_s, res.gyro_bias_sigma_rad_s);
-        filter_.set_reference_temperature(res.temp_ref_degC);
-        break;
-      }
-    }
+    align(s, dt);
     prev_ = s;
     if (aligned()) emit();
     return;
@@ -123,81 +166,179 @@ void Navigator::process(const ImuSample& s) {
   in.dt_s = dt;
   predict_.add(in);
   if (predict_.pending_s() >= cfg_.covariance_period_s - 1e-9) predict_.flush(filter_);
+  widen_for_faults(s, dt);
+  const double a = std::min(1.0, dt / 1.0);
+  horizontal_accel_m_s2_ += a * (f_n.head<2>().norm() - horizontal_accel_m_s2_);
+  const Eigen::Index yaw = filter_.layout().att.start + 2;
+  if (horizontal_accel_m_s2_ < cfg_.yaw_observable_accel_m_s2 &&
+      filter_.P()(yaw, yaw) > cfg_.yaw_freeze_sigma_rad * cfg_.yaw_freeze_sigma_rad) {
+    frozen_.set(static_cast<std::size_t>(yaw));
+  }
 
   fuse_due_gnss(s.t_s, dt, r1);
   fuse_magnetometer(s);
+  update_health(s.t_s, dt);
   prev_ = s;
   emit();
 }
 
+void Navigator::align(const ImuSample& s, double dt) {
+  alignment_.add_imu(s, dt);
+  AlignmentResult res;
+  const double latency = filter_.gps_latency_s();
+  while (!gnss_.empty() && gnss_.front().arrival_s - latency <= s.t_s) {
+    const GnssObservation z = gnss_.front();
+    gnss_.pop();
+    if (!alignment_.add_gnss(z, s.t_s, res)) continue;
+    nav_ = res.nav;
+    filter_.seed_attitude(res.att_sigma_rad);
+    if (res.at_rest) {
+      filter_.seed_gyro_bias(res.gyro_bias_rad_s, res.gyro_bias_sigma_rad_s);
+      // Floor: normal gravity against the site's true gravity (anomalies ~1e-3 g).
+      const double g = wgs84::normal_gravity_m_s2(nav_.lat_rad, nav_.h_m);
+      filter_.seed_accel_bias_at_rest(nav_, res.rest_specific_force_b_m_s2, g,
+                                      std::max(res.rest_specific_force_sigma_m_s2, 0.01));
+    }
+    filter_.set_reference_temperature(res.temp_ref_degC);
+    filter_.set_gps_bias_sigma(z.sigma_ned_m, 0.0);
+    recovery_.restart(s.t_s);
+    last_gnss_pos_t_s_ = s.t_s;
+    events_ |= nav_flag::kAlignedNow;
+    return;
+  }
+}
+
+void Navigator::widen_for_faults(const ImuSample& s, double dt) {
+  const std::uint8_t clipped = s.clipped_axes | prev_.clipped_axes;  // the interval touches a clipped sample
+  const bool gap = dt > cfg_.gap_periods * period_s_;
+  if (clipped || gap) predict_.flush(filter_);  // the extra noise belongs after this interval
+  const Eigen::Matrix3d C = nav_.C_nb();
+  Eigen::Vector3d var_f = Eigen::Vector3d::Zero(), var_w = Eigen::Vector3d::Zero();
+  frozen_.reset();
+  for (std::size_t a = 0; a < kSensorAxes; ++a) {
+    const auto i = static_cast<Eigen::Index>(a % 3);
+    const bool accel = a < 3;
+    if ((clipped >> a) & 1u) {
+      // The true value is beyond the converter: an unknown error, constant
+      // over the burst, so its velocity (attitude) error grows as k dt and the
+      // variance by sigma^2 (2k+1) dt^2 per interval.
+      const double range = accel ? cfg_.screen.accel_range_m_s2 : cfg_.screen.gyro_range_rad_s;
+      const double v = std::abs(accel ? s.specific_force_b_m_s2(i) : s.angular_rate_b_rad_s(i));
+      const double sigma = cfg_.clip_error_fraction * std::max(range, v);
+      const double k = static_cast<double>(clip_run_[a]++);
+      (accel ? var_f : var_w)(i) += sigma * sigma * (2.0 * k + 1.0) * dt * dt;
+      last_clip_t_s_[a] = s.t_s;
+    } else {
+      clip_run_[a] = 0;
+    }
+    if (s.t_s - last_clip_t_s_[a] < cfg_.clip_hold_s) filter_.add_axis_states(static_cast<Eigen::Index>(a), frozen_);
+  }
+  if (gap) {  // the motion inside the gap is unknown beyond the straight line through its ends
+    const double sa = cfg_.gap_accel_sigma_m_s2 + 0.5 * (s.specific_force_b_m_s2 - prev_.specific_force_b_m_s2).norm();
+    const double sw = cfg_.gap_rate_sigma_rad_s + 0.5 * (s.angular_rate_b_rad_s - prev_.angular_rate_b_rad_s).norm();
+    var_f.array() += sa * sa * dt * dt;
+    var_w.array() += sw * sw * dt * dt;
+  }
+  if (var_f.any()) filter_.add_block_noise(filter_.layout().vel, C * var_f.asDiagonal() * C.transpose());
+  if (var_w.any()) filter_.add_block_noise(filter_.layout().att, C * var_w.asDiagonal() * C.transpose());
+}
+
 void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
   while (!gnss_.empty()) {
-    const GnssObservation& z = gnss_.front();
+    const GnssObservation z = gnss_.front();
     const double t_meas = z.arrival_s - filter_.gps_latency_s();
     if (t_meas > t_now) break;
+    gnss_.pop();
     const double dt_back = t_now - t_meas;
     // Later than one IMU interval (plus slack for jitter) means the horizon missed it.
     if (dt_back > 1.5 * dt + 1e-3) {
       ++counters_.gnss_late;
-      gnss_.pop();
       continue;
     }
     if (z.has_position) {
-      Measurement m = gnss_position_measurement(filter_, nav_, dt_back, z, cfg_.gate_sigma);
-      if (fuse(AidingSource::GnssPosition, m, t_meas)) {
-        last_position_accepted_t_ = t_meas;
-      } else if (t_meas - last_position_accepted_t_ > cfg_.reset_after_rejected_s) {
-        // Rejected for too long: the filter, not the receiver, is wrong. Fuse
-        // this epoch ungated (corrects velocity and attitude through the
-        // correlations too); reset to it only if even that fails.
-        ++counters_.gnss_resets;
-        m.gate_sigma = kUngated;
-        if (!fuse(AidingSource::GnssPosition, m, t_meas)) reset_to_gnss(z, dt_back);
-        last_position_accepted_t_ = t_meas;
-      }
+      filter_.set_gps_bias_sigma(z.sigma_ned_m, t_meas - last_gnss_pos_t_s_);
+      last_gnss_pos_t_s_ = t_meas;
+      const bool ok = fuse(AidingSource::GnssPosition,
+                           gnss_position_measurement(filter_, nav_, dt_back, z, cfg_.gate_sigma), t_meas);
+      recover(recovery_.on_position(t_meas, ok), z, dt_back, t_meas);
     }
     if (z.has_velocity && cfg_.fuse_velocity) {
-      fuse(AidingSource::GnssVelocity,
-           gnss_velocity_measurement(filter_, nav_, now.angular_rate_b_rad_s, accel_n_, dt_back, z, cfg_.gate_sigma),
-           t_meas);
+      if (!vel_noise_started_) {  // the first epoch's sigma is the starting value
+        vel_noise_.configure(cfg_.gnss_velocity_noise, z.sigma_vel_m_s);
+        vel_noise_started_ = true;
+        last_vel_update_t_s_ = t_meas;
+      }
+      GnssObservation zv = z;
+      zv.sigma_vel_m_s = vel_noise_.sigma();
+      const bool ok = fuse(AidingSource::GnssVelocity,
+                           gnss_velocity_measurement(filter_, nav_, now.angular_rate_b_rad_s, accel_n_, dt_back, zv,
+                                                     cfg_.gate_sigma),
+                           t_meas);
+      vel_noise_.learn(last_result_, t_meas - last_vel_update_t_s_);
+      last_vel_update_t_s_ = t_meas;
+      recover(recovery_.on_velocity(t_meas, ok, z.speed_m_s), z, dt_back, t_meas);
     }
-    gnss_.pop();
+  }
+}
+
+void Navigator::recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas) {
+  if (action == RecoveryAction::None) return;
+  predict_.flush(filter_);
+  if (counters_.resets() == 0) counters_.first_reset_t_s = t_meas;
+  const StateLayout& L = filter_.layout();
+  const double sigma_vd = std::sqrt(filter_.P()(L.vel.start + 2, L.vel.start + 2));
+  const Eigen::Vector3d sigma_v(z.sigma_vel_m_s, z.sigma_vel_m_s, sigma_vd);
+  if (action == RecoveryAction::ResetVelocityAndYaw && z.has_velocity) {
+    // Turn the heading by the angle between the INS's and the receiver's ground tracks.
+    const Eigen::Vector2d v_ins = nav_.v_n_m_s.head<2>();
+    if (v_ins.norm() > cfg_.recovery.yaw_reset_min_speed_m_s) {
+      const double dyaw = std::atan2(v_ins.x() * z.v_ne_m_s.y() - v_ins.y() * z.v_ne_m_s.x(), v_ins.dot(z.v_ne_m_s));
+      filter_.reset_yaw(nav_, dyaw, 0.3);
+      ++counters_.yaw_resets;
+      events_ |= nav_flag::kYawReset;
+    }
+  }
+  if (action == RecoveryAction::ResetPosition) {
+    const Eigen::Vector3d lever_n = nav_.C_nb() * filter_.lever_arm_b_m();
+    const double rm = wgs84::meridian_radius_m(z.lat_rad) + z.h_m;
+    const double rn = wgs84::transverse_radius_m(z.lat_rad) + z.h_m;
+    // IMU position = antenna - C l, carried forward to the filter time.
+    const Eigen::Vector3d offset = -lever_n + nav_.v_n_m_s * dt_back;
+    nav_.lat_rad = z.lat_rad + offset.x() / rm;
+    nav_.lon_rad = z.lon_rad + offset.y() / (rn * std::cos(z.lat_rad));
+    nav_.h_m = z.h_m - offset.z();
+    filter_.reset_block(L.pos, z.sigma_ned_m);
+    if (L.has(Effect::GpsPositionBias)) {
+      filter_.reset_block(L.of(Effect::GpsPositionBias), filter_.gps_bias_sigma_ned_m());
+    }
+    ++counters_.position_resets;
+    events_ |= nav_flag::kPositionReset;
+  }
+  if (z.has_velocity) {
+    nav_.v_n_m_s.head<2>() = z.v_ne_m_s;
+    filter_.reset_block(L.vel, sigma_v);
+    ++counters_.velocity_resets;
+    events_ |= nav_flag::kVelocityReset;
   }
 }
 
 void Navigator::fuse_magnetometer(const ImuSample& s) {
-  if (!s.has_mag || !s.mag_b_uT.allFinite() || !filter_.layout().has(Effect::MagEarthField)) return;
-  if (!mag_started_) {
-    filter_.start_mag_field(nav_, s.mag_b_uT, cfg_.mag_sigma_uT);
+  if (!cfg_.use_mag || !s.has_mag || !s.mag_b_uT.allFinite()) return;
+  last_mag_sample_t_s_ = s.t_s;
+  if (!mag_started_) {  // the first field sample switches the reserved states on
+    predict_.flush(filter_);
+    filter_.activate_deferred();
+    filter_.start_mag_field(nav_, s.mag_b_uT, mag_noise_.sigma());
     mag_started_ = true;
-    last_mag_t_s_ = s.t_s;
+    last_mag_fused_t_s_ = s.t_s;
     return;
   }
-  if (s.t_s - last_mag_t_s_ < cfg_.mag_period_s - 1e-6) return;
-  last_mag_t_s_ = s.t_s;
-  fuse(AidingSource::Magnetometer, magnetometer_measurement(filter_, nav_, s.mag_b_uT, cfg_.mag_sigma_uT, cfg_.gate_sigma),
+  if (s.t_s - last_mag_fused_t_s_ < cfg_.mag_period_s - 1e-6) return;
+  const double since = s.t_s - last_mag_fused_t_s_;
+  last_mag_fused_t_s_ = s.t_s;
+  fuse(AidingSource::Magnetometer, magnetometer_measurement(filter_, nav_, s.mag_b_uT, mag_noise_.sigma(), cfg_.gate_sigma),
        s.t_s);
-}
-
-void Navigator::reset_to_gnss(const GnssObservation& z, double dt_back) {
-  const StateLayout& L = filter_.layout();
-  const Eigen::Vector3d lever_n = nav_.C_nb() * filter_.lever_arm_b_m();
-  const double rm = wgs84::meridian_radius_m(z.lat_rad) + z.h_m;
-  const double rn = wgs84::transverse_radius_m(z.lat_rad) + z.h_m;
-  // IMU position = antenna - C l, carried forward to the filter time.
-  const Eigen::Vector3d offset = -lever_n + nav_.v_n_m_s * dt_back;
-  nav_.lat_rad = z.lat_rad + offset.x() / rm;
-  nav_.lon_rad = z.lon_rad + offset.y() / (rn * std::cos(z.lat_rad));
-  nav_.h_m = z.h_m - offset.z();
-  if (z.has_velocity) nav_.v_n_m_s.head<2>() = z.v_ne_m_s;
-  StateMat& P = filter_.P();
-  auto reset_block = [&P](Eigen::Index start, const Eigen::Vector3d& sigma) {
-    P.middleRows(start, 3).setZero();
-    P.middleCols(start, 3).setZero();
-    for (Eigen::Index i = 0; i < 3; ++i) P(start + i, start + i) = sigma(i) * sigma(i);
-  };
-  reset_block(L.pos.start, z.sigma_ned_m);
-  if (z.has_velocity) reset_block(L.vel.start, cfg_.initial.vel_ned_m_s);
+  mag_noise_.learn(last_result_, since);
 }
 
 bool Navigator::fuse(AidingSource src, const Measurement& m, double t_meas) {
@@ -205,22 +346,59 @@ bool Navigator::fuse(AidingSource src, const Measurement& m, double t_meas) {
   InnovationRecord rec;
   rec.t_s = t_meas;
   rec.source = src;
-  rec.result = fuse_measurement(filter_.P(), dx_, m);
+  rec.result = fuse_measurement(filter_.P(), dx_, m, frozen_);
+  last_result_ = rec.result;
   const auto i = static_cast<std::size_t>(src);
+  test_ratio_[i] = rec.result.test_ratio.head(rec.result.rows).maxCoeff();
+  static constexpr std::uint32_t kFused[] = {nav_flag::kGnssPosFused, nav_flag::kGnssVelFused, nav_flag::kMagFused};
+  static constexpr std::uint32_t kRejected[] = {nav_flag::kGnssPosRejected, nav_flag::kGnssVelRejected,
+                                                nav_flag::kMagRejected};
   if (rec.result.accepted) {
     ++counters_.accepted[i];
+    events_ |= kFused[i];
     filter_.feedback(dx_, nav_);
   } else {
     ++counters_.rejected[i];
+    events_ |= kRejected[i];
   }
   if (observer_) observer_->on_innovation(rec);
+  if (std::getenv("DBG") && t_meas < std::atof(std::getenv("DBG"))) {
+    const Eigen::Index a = filter_.layout().att.start + 2;
+    std::fprintf(stderr, "t=%.3f src=%d yaw_sig=%.3f deg yaw=%.3f\n", t_meas, int(src), std::sqrt(filter_.P()(a, a)) * 57.2958,
+                 euler_from_quat(nav_.q_nb).z() * 57.2958);
+  }
   return rec.result.accepted;
 }
 
+void Navigator::update_health(double t_now, double dt) {
+  std::uint32_t f = 0;
+  for (std::size_t a = 0; a < kSensorAxes; ++a)
+    if (t_now - last_clip_t_s_[a] < cfg_.clip_hold_s) f |= nav_flag::kClipping;
+  const bool timeout = t_now - last_gnss_pos_t_s_ > cfg_.gnss_timeout_s;
+  if (timeout) {
+    f |= nav_flag::kGnssTimeout;
+    counters_.gnss_timeout_total_s += dt;
+    if (!in_timeout_) ++counters_.gnss_timeouts;
+  }
+  in_timeout_ = timeout;
+  if (mag_started_ && t_now - last_mag_sample_t_s_ > cfg_.mag_timeout_s) f |= nav_flag::kMagTimeout;
+  if (recovery_.lost(t_now)) {
+    f |= nav_flag::kLost;
+    if (counters_.lost_total_s == 0.0) counters_.first_lost_t_s = t_now;
+    counters_.lost_total_s += dt;
+  }
+  if (recovery_.gnss_suspect(t_now)) f |= nav_flag::kGnssSuspect;
+  state_flags_ = f;
+}
+
 void Navigator::emit() {
+  const std::uint32_t flags = state_flags_ | events_ | (aligned() ? nav_flag::kAligned : 0u);
+  events_ = 0;
   if (!observer_) return;
   // P is the last prediction's: at most covariance_period_s old.
   out_.nav = nav_;
+  out_.flags = flags;
+  out_.test_ratio = test_ratio_;
   const StateLayout& L = filter_.layout();
   out_.P_nav = filter_.P().block(L.pos.start, L.pos.start, kNavStates, kNavStates);
   for (Eigen::Index a = 0; a < kSensorAxes; ++a) {

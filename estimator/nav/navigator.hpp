@@ -1,6 +1,7 @@
 #pragma once
-// The navigation unit: prefilter -> IMU ring buffer -> alignment / strapdown
-// INS + error-state EKF, with GNSS fused at its own time of validity.
+// The navigation unit: screen -> prefilter -> IMU ring buffer -> alignment /
+// strapdown INS + error-state EKF, with GNSS fused at its own time of
+// validity, the magnetometer when it has a sample, and the health of it all.
 //
 // Delayed fusion (PX4 EKF2's delayed horizon, with compile-time buffers):
 // samples wait in a fixed-size ring buffer until they are `horizon_s` older
@@ -8,6 +9,12 @@
 // minus latency) has arrived and sits in its own ring buffer, so it is fused
 // at the first IMU instant at or after its validity time, with the state
 // taken back by the (sub-sample) difference. No heap after init().
+//
+// Faults are survived, counted and flagged (nav_health.hpp): dropped
+// samples (NaN, time not increasing), clipping (process noise of the clipped
+// axes widened, their biases frozen), gaps (propagated over the true interval
+// with the unknown motion's noise), GNSS rejected for too long (reset, see
+// gnss_recovery.hpp), sensor timeouts.
 #include <array>
 #include <cstdint>
 
@@ -16,6 +23,10 @@
 #include "estimator/ekf/error_state_filter.hpp"
 #include "estimator/ekf/measurement_update.hpp"
 #include "estimator/ekf/predict_accumulator.hpp"
+#include "estimator/nav/gnss_recovery.hpp"
+#include "estimator/nav/imu_screen.hpp"
+#include "estimator/nav/nav_health.hpp"
+#include "estimator/nav/noise_adapter.hpp"
 #include "estimator/prefilter/imu_prefilter.hpp"
 #include "estimator/util/ring_buffer.hpp"
 
@@ -24,52 +35,61 @@ namespace sinu::est {
 inline constexpr std::size_t kImuBufferCapacity = 512;   // 0.5 s at 1000 Hz
 inline constexpr std::size_t kGnssBufferCapacity = 32;   // 6 s of 5 Hz epochs
 
-enum class AidingSource : std::uint8_t { GnssPosition, GnssVelocity, Magnetometer };
-inline constexpr std::size_t kAidingSourceCount = 3;
-inline constexpr std::array<const char*, kAidingSourceCount> kAidingSourceNames = {"gnss_position", "gnss_velocity",
-                                                                                   "magnetometer"};
-
 struct NavigatorConfig {
   SensorNoise noise = SensorNoise::defaults(NoiseModelKind::GaussMarkov);
   EffectSet effects;
   EffectTuning tuning;
   NavUncertainty initial;
   AlignmentConfig alignment;
+  RecoveryConfig recovery;
+  ImuScreenConfig screen;            // full scales: clipping
   double horizon_s = 0.3;            // must exceed the GNSS latency
   double gate_sigma = 5.0;           // innovation gate [sigma]
   double gps_latency_s = 0.0;        // configured latency (initial value when estimated)
   Eigen::Vector3d lever_arm_b_m = Eigen::Vector3d::Zero();  // antenna minus IMU, body FRD
   bool fuse_velocity = true;
-  // Magnetometer: fused when the layout has Effect::MagEarthField and the
-  // sample carries a field; the field state starts from the first sample after
-  // alignment. sigma covers the sensor noise and small disturbances.
-  double mag_sigma_uT = 1.0;
+  // Magnetometer: its states (Earth field, hard iron, and soft iron when in
+  // `effects`) are reserved and switched on by the first field sample after
+  // alignment; sigma covers the sensor noise and small disturbances.
+  bool use_mag = true;
+  double mag_sigma_uT = 1.0;          // initial value when adapted
+  // Noise the data do not state, learnt from the innovations (noise_adapter.hpp):
+  // GNSS velocity (NMEA has no accuracy for it; the initial value is the
+  // observation's sigma) and the magnetometer.
+  NoiseAdapterConfig gnss_velocity_noise{true, 60.0, 0.02, 2.0};
+  NoiseAdapterConfig mag_noise{true, 60.0, 0.1, 5.0};
   double mag_period_s = 0.1;          // fuse at most this often (10 Hz)
-  double reset_after_rejected_s = 5.0;  // position rejected this long: fuse ungated / reset (as PX4 resets)
   double covariance_period_s = 0.1;  // covariance prediction at most this far apart (0: every sample)
-  double max_imu_gap_s = 0.5;        // longer gaps are counted (and bridged)
+  // Faults.
+  double clip_error_fraction = 0.5;   // 1 sigma of the unknown true value of a clipped axis, x full scale
+  double clip_hold_s = 10.0;          // a clipped axis's biases stay frozen this long after it clipped
+  double gap_periods = 3.5;           // an interval longer than this many sample periods is a gap
+  double gap_accel_sigma_m_s2 = 1.0;  // unknown acceleration and rate during a gap, on top of
+  double gap_rate_sigma_rad_s = 0.02; // half the change across it
+  // Heading observability: while the heading is uncertain (sigma above
+  // yaw_freeze_sigma_rad) and the horizontal acceleration is below
+  // yaw_observable_accel_m_s2 (at rest, steady flight), no update may move it:
+  // at rest the accelerometer's noise, read as horizontal specific force,
+  // would otherwise make the filter grow confident of a heading it cannot see.
+  double yaw_freeze_sigma_rad = 0.05;
+  double yaw_observable_accel_m_s2 = 0.3;
+  double gnss_timeout_s = 2.0;
+  double mag_timeout_s = 1.0;
 };
 
 struct NavOutput {
   NavState nav;
   Eigen::Matrix<double, 9, 9> P_nav;  // pos, vel, att block, as of the last covariance prediction (<= covariance_period_s old)
   std::array<double, kSensorAxes> sensor_error{}, sensor_error_sigma{};
+  std::uint32_t flags = 0;            // nav_flag bits: state now, events since the previous output
+  // Largest component test ratio of the latest update of each source (PX4 style: > 1 rejects).
+  std::array<double, kAidingSourceCount> test_ratio{};
 };
 
 struct InnovationRecord {
   double t_s = 0.0;
   AidingSource source = AidingSource::GnssPosition;
   UpdateResult result;
-};
-
-struct NavCounters {
-  std::array<std::uint64_t, kAidingSourceCount> accepted{}, rejected{};
-  std::uint64_t gnss_late = 0;          // arrived after the horizon had passed its time
-  std::uint64_t gnss_overflow = 0;      // buffer full
-  std::uint64_t imu_non_increasing = 0; // dropped: time not after the previous sample
-  std::uint64_t imu_gaps = 0;
-  std::uint64_t imu_invalid = 0;        // non-finite values
-  std::uint64_t gnss_resets = 0;        // epochs fused ungated (or reset to) after prolonged rejection
 };
 
 class NavObserver {
@@ -93,35 +113,59 @@ class Navigator {
   const NavState& nav() const { return nav_; }
   const ErrorStateFilter& filter() const { return filter_; }
   const NavCounters& counters() const { return counters_; }
+  const NavigatorConfig& config() const { return cfg_; }
+  /// The noise sigmas in use now (learnt, or as configured).
+  double gnss_velocity_sigma_m_s() const { return vel_noise_.sigma(); }
+  double mag_sigma_uT() const { return mag_noise_.sigma(); }
 
  private:
-  void push_filtered(const ImuSample& s);
+  void push_filtered(ImuSample s);
   void process(const ImuSample& s);
+  void align(const ImuSample& s, double dt);
+  void widen_for_faults(const ImuSample& s, double dt);
   void fuse_due_gnss(double t_now, double dt, const BodyRates& now);
   void fuse_magnetometer(const ImuSample& s);
   bool fuse(AidingSource src, const Measurement& m, double t_meas);
-  void reset_to_gnss(const GnssObservation& z, double dt_back);
+  void recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas);
+  void update_health(double t_now, double dt);
   void emit();
 
   NavigatorConfig cfg_;
   NavObserver* observer_ = nullptr;
   ImuPrefilter* prefilter_ = nullptr;
   PassThroughPrefilter pass_through_;
+  ImuScreen screen_;
   RingBuffer<ImuSample, kImuBufferCapacity> imu_;
   RingBuffer<GnssObservation, kGnssBufferCapacity> gnss_;
   CoarseAlignment alignment_;
   ErrorStateFilter filter_;
+  GnssRecovery recovery_;
   NavState nav_;
   ImuSample prev_;
   bool have_prev_ = false;
-  bool have_raw_ = false;
   bool mag_started_ = false;
-  double last_mag_t_s_ = 0.0;
-  double last_raw_t_s_ = 0.0;
+  double last_mag_fused_t_s_ = 0.0, last_mag_sample_t_s_ = 0.0;
   Eigen::Vector3d accel_n_ = Eigen::Vector3d::Zero();
   StateVec dx_;
   PredictAccumulator predict_;
-  double last_position_accepted_t_ = 0.0;
+  // Raw-stream bookkeeping (before the prefilter's delay).
+  double last_raw_t_s_ = 0.0, raw_period_s_ = 0.0;
+  bool have_raw_ = false;
+  std::array<double, kSensorAxes> clip_until_t_s_{};     // prefilter outputs up to here carry a raw clip
+  std::array<double, kSensorAxes> last_clip_t_s_{};      // latest processed clipped sample, per axis
+  std::array<int, kSensorAxes> clip_run_{};              // consecutive clipped intervals, per axis
+  double period_s_ = 0.0;                                // nominal interval of the processed stream
+  double horizontal_accel_m_s2_ = 0.0;                   // smoothed (1 s) horizontal specific force, NED
+  StateMask frozen_;
+  NoiseAdapter vel_noise_, mag_noise_;
+  bool vel_noise_started_ = false;
+  UpdateResult last_result_;
+  double last_vel_update_t_s_ = 0.0;
+  // Health.
+  std::uint32_t events_ = 0, state_flags_ = 0;
+  std::array<double, kAidingSourceCount> test_ratio_{};
+  double last_gnss_pos_t_s_ = 0.0;
+  bool in_timeout_ = false;
   NavOutput out_;
   NavCounters counters_;
 };

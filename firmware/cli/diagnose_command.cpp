@@ -16,9 +16,9 @@ namespace sinu::app {
 
 namespace {
 
-// Nuisance states a navigation engineer always carries: the unit's turn-on
-// biases and the receiver's slowly varying error.
-constexpr const char* kDefaultBaseline = "accel_bias,gyro_bias,gps_position_bias";
+// The baseline is the default model (replay::default_effects: turn-on biases,
+// the receiver's slowly varying error and its latency); --effects adds to it.
+constexpr const char* kDefaultBaseline = "";
 // Everything else the EKF can estimate (the magnetometer's states come with it).
 constexpr const char* kDefaultCandidates =
     "lever_arm,gps_latency,accel_scale,gyro_scale,accel_temp_bias,gyro_temp_bias,mag_soft_iron";

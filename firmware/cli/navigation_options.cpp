@@ -15,8 +15,13 @@ void NavigationCliOptions::add_to(CLI::App& sub) {
   sub.add_option("--ar-method", opt.calib.ar_method, "AR estimator in calib.json: burg, yule_walker, covariance")
       ->capture_default_str();
   sub.add_option("--ar-order", opt.calib.ar_order, "AR order p (1..4)")->capture_default_str();
-  sub.add_option("--effects", effects, "Effect states in the model (vocabulary: README, 'sinu replay')")
+  app = &sub;
+  sub.add_option("--effects", effects,
+                 "Effect states added to the defaults (accel_bias, gyro_bias, gps_position_bias, gps_latency; "
+                 "vocabulary: README, 'sinu replay')")
       ->capture_default_str();
+  sub.add_option("--without-effects", without_effects,
+                 "Default effect states to leave out (comma list, or none: no default effect)");
   sub.add_option("--gps-latency", opt.gps_latency_s, "GPS latency: fix valid at arrival minus this [s]")
       ->capture_default_str();
   sub.add_option("--lever-arm", lever_arm, "Antenna minus IMU in body FRD [m], x,y,z")->delimiter(',');
@@ -25,10 +30,12 @@ void NavigationCliOptions::add_to(CLI::App& sub) {
       ->capture_default_str();
   sub.add_option("--gate", opt.gate_sigma, "Innovation gate [sigma]")->capture_default_str();
   sub.add_option("--gps-vel-sigma", opt.sigma.velocity_sigma_m_s,
-                 "GNSS velocity noise per axis, 1 sigma [m/s] (NMEA carries none)")
+                 "GNSS velocity noise per axis, 1 sigma [m/s] (NMEA carries none); given: kept fixed, else "
+                 "learnt from the innovations starting here")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  sub.add_option("--mag-sigma", opt.mag_sigma_uT, "Magnetometer noise per axis, 1 sigma [uT]")
+  sub.add_option("--mag-sigma", opt.mag_sigma_uT,
+                 "Magnetometer noise per axis, 1 sigma [uT]; given: kept fixed, else learnt from the innovations")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   sub.add_option("--mag-declination", opt.mag_declination_deg,
@@ -48,7 +55,12 @@ bool NavigationCliOptions::resolve(std::string& error) {
     error = "--model must be gm or ar, not '" + model + "'";
     return false;
   }
-  if (!replay::parse_effects(effects, opt.effects, error)) return false;
+  if (!replay::resolve_effects(effects, without_effects, opt.effects, error)) return false;
+  // A dataset's full scales only when given (a recording's come from its driver settings).
+  if (app && app->count("--gps-vel-sigma")) opt.adapt_velocity_noise = false;
+  if (app && app->count("--mag-sigma")) opt.adapt_mag_noise = false;
+  if (app && app->count("--accel-range")) opt.accel_range_m_s2 = imu.accel_g * 9.80665;
+  if (app && app->count("--gyro-range")) opt.gyro_range_rad_s = imu.gyro_dps * 3.14159265358979323846 / 180.0;
   if (!lever_arm.empty()) {
     if (lever_arm.size() != 3) {
       error = "--lever-arm needs three numbers x,y,z [m]";

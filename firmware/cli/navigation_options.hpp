@@ -15,9 +15,11 @@ namespace sinu::app {
 struct NavigationCliOptions {
   replay::ReplayOptions opt;
   std::string model;
-  std::string effects;
+  std::string effects;          // added to the defaults
+  std::string without_effects;  // removed from them
   std::vector<double> lever_arm;
   ImuOptions imu;  // for a raw recording: the driver settings it was recorded with
+  CLI::App* app = nullptr;
 
   NavigationCliOptions(std::string default_model, std::string default_effects)
       : model(std::move(default_model)), effects(std::move(default_effects)) {}

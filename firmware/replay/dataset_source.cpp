@@ -59,13 +59,6 @@ bool DatasetSource::run(ReplayFeed& feed, std::string& error) {
   return true;
 }
 
-bool DatasetSource::first_sample_has_mag() {
-  io::CsvReader imu(io::kImuSchema);  // a second reader: the first one stays at the start
-  io::CsvRow row;
-  if (!imu.open(paths_.imu()) || imu.next(row) != io::ReadStatus::Row) return false;
-  return io::ImuRow{row}.has_mag();
-}
-
 SourceCounters DatasetSource::counters() const {
   return {incomplete_rows_, has_gps_ ? gps_.corrupt() : 0};
 }

@@ -14,7 +14,6 @@ class DatasetSource final : public ReplaySource {
   /// Opens imu.csv and, when present, gps.nmea. False with `error` (file:line).
   bool open(const std::string& dir, std::string& error);
   bool run(ReplayFeed& feed, std::string& error) override;
-  bool first_sample_has_mag() override;
   SourceCounters counters() const override;
   std::string default_truth() const override;
 

@@ -22,14 +22,42 @@ void ChiStats::add(double v, double lo, double hi) {
   if (v >= lo && v <= hi) ++inside;
 }
 
-void NavMetrics::init(const std::vector<Outage>& list) {
+void NavMetrics::init(const std::vector<Outage>& list, const Eigen::Vector3d& lever_arm_b_m) {
+  lever_arm_b_m_ = lever_arm_b_m;
   outages.clear();
   outages.reserve(list.size());
   for (const Outage& o : list) outages.push_back({o, 0.0, 0});
 }
 
+void NavMetrics::add_gnss(const GnssPoint& fix) {
+  if (pending_gnss_.full()) pending_gnss_.pop();  // no truth near it: not scored
+  pending_gnss_.push(fix);
+}
+
+void NavMetrics::score_gnss(const TruthPoint& a, const TruthPoint& b) {
+  namespace w = est::wgs84;
+  while (!pending_gnss_.empty() && pending_gnss_.front().t_s <= b.t_s) {
+    const GnssPoint g = pending_gnss_.front();
+    pending_gnss_.pop();
+    if (g.t_s < a.t_s || b.t_s - a.t_s > 1.0) continue;  // outside truth, or truth has a gap here
+    const double f = b.t_s > a.t_s ? (g.t_s - a.t_s) / (b.t_s - a.t_s) : 0.0;
+    const double lat = a.lat_rad + f * (b.lat_rad - a.lat_rad), lon = a.lon_rad + f * (b.lon_rad - a.lon_rad);
+    const double h = a.h_m + f * (b.h_m - a.h_m);
+    const Eigen::Vector3d lever_n = a.has_att ? Eigen::Vector3d(a.q_nb * lever_arm_b_m_) : Eigen::Vector3d::Zero();
+    const Eigen::Vector3d dp((g.lat_rad - lat) * (w::meridian_radius_m(lat) + h) - lever_n.x(),
+                             (g.lon_rad - lon) * (w::transverse_radius_m(lat) + h) * std::cos(lat) - lever_n.y(),
+                             -(g.h_m - h) - lever_n.z());
+    ++gnss_compared;
+    gnss_sum_h2 += dp.head<2>().squaredNorm();
+    gnss_sum_v2 += dp.z() * dp.z();
+  }
+}
+
 void NavMetrics::add_truth(const TruthPoint& tr, const est::NavState& nav, const Eigen::Matrix<double, 9, 9>& P) {
   namespace w = est::wgs84;
+  if (have_prev_truth_) score_gnss(prev_truth_, tr);
+  prev_truth_ = tr;
+  have_prev_truth_ = true;
   const Eigen::Vector3d dp((nav.lat_rad - tr.lat_rad) * (w::meridian_radius_m(tr.lat_rad) + tr.h_m),
                            (nav.lon_rad - tr.lon_rad) * (w::transverse_radius_m(tr.lat_rad) + tr.h_m) * std::cos(tr.lat_rad),
                            -(nav.h_m - tr.h_m));

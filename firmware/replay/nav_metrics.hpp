@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "estimator/nav/navigator.hpp"
+#include "estimator/util/ring_buffer.hpp"
 #include "firmware/replay/replay_options.hpp"
 
 namespace sinu::replay {
@@ -33,20 +34,38 @@ struct OutageDrift {
   std::uint64_t points = 0;
 };
 
+/// A GNSS fix as the receiver gave it: the antenna at its time of validity.
+struct GnssPoint {
+  double t_s = 0.0;
+  double lat_rad = 0.0, lon_rad = 0.0, h_m = 0.0;
+};
+
 class NavMetrics {
  public:
   /// Outages are copied once (init-time allocation).
-  void init(const std::vector<Outage>& outages);
+  void init(const std::vector<Outage>& outages, const Eigen::Vector3d& lever_arm_b_m);
   /// One truth instant and the solution (interpolated) at that instant.
   void add_truth(const TruthPoint& truth, const est::NavState& nav, const Eigen::Matrix<double, 9, 9>& P_nav);
   void add_innovation(const est::InnovationRecord& rec);
+  /// A fix the navigator was given, scored against truth (interpolated to its
+  /// time, moved to the antenna by the lever arm) as the raw-GNSS baseline.
+  void add_gnss(const GnssPoint& fix);
 
   std::uint64_t compared = 0, compared_att = 0, compared_vel = 0;
   double sum_h2 = 0.0, sum_v2 = 0.0, sum_vel2 = 0.0, sum_att2 = 0.0;
+  std::uint64_t gnss_compared = 0;
+  double gnss_sum_h2 = 0.0, gnss_sum_v2 = 0.0;
   ChiStats nees;
   int nees_dof = 0;
   std::array<ChiStats, est::kAidingSourceCount> nis{};
   std::vector<OutageDrift> outages;
+
+ private:
+  void score_gnss(const TruthPoint& before, const TruthPoint& after);
+  est::RingBuffer<GnssPoint, 64> pending_gnss_;
+  TruthPoint prev_truth_;
+  bool have_prev_truth_ = false;
+  Eigen::Vector3d lever_arm_b_m_ = Eigen::Vector3d::Zero();
 };
 
 /// Two-sided 95% chi-square bounds for 1..9 degrees of freedom.

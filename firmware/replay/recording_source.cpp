@@ -1,5 +1,7 @@
 #include "firmware/replay/recording_source.hpp"
 
+#include "drivers/imu/icm20948_registers.hpp"
+
 namespace sinu::replay {
 
 bool RecordingSource::open(const std::string& path, std::string& error) {
@@ -11,30 +13,9 @@ bool RecordingSource::open(const std::string& path, std::string& error) {
   return true;
 }
 
-namespace {
-/// Stops the board loop at the first IMU sample.
-class FirstSample final : public board::BoardSink {
- public:
-  void on_imu(const drivers::ImuSample& s) override {
-    if (!seen) has_mag = s.has_mag;
-    seen = true;
-    stop.store(true);
-  }
-  void on_sentence(hal::TimeNs, std::string_view) override {}
-  void on_fix(const drivers::GpsFix&) override {}
-  std::atomic<bool> stop{false};
-  bool seen = false, has_mag = false;
-};
-}  // namespace
-
-bool RecordingSource::first_sample_has_mag() {
-  hal::ReplaySession probe;
-  std::string error;
-  if (!probe.load(path_, error)) return false;
-  FirstSample first;
-  board::BoardLoop loop({probe.drdy(), probe.i2c(), probe.serial(), probe.clock()}, imu_config_);
-  loop.run(first, &first.stop);
-  return first.has_mag;
+void RecordingSource::full_scale(double& accel_m_s2, double& gyro_rad_s) const {
+  accel_m_s2 = 32767.0 * drivers::icm20948::accel_m_s2_per_lsb(static_cast<int>(imu_config_.accel_range));
+  gyro_rad_s = 32767.0 * drivers::icm20948::gyro_rad_s_per_lsb(static_cast<int>(imu_config_.gyro_range));
 }
 
 void RecordingSource::release_oldest() {

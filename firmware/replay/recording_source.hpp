@@ -32,8 +32,7 @@ class RecordingSource final : public ReplaySource, private board::BoardSink {
   /// ends the replay there and is reported by note().
   bool open(const std::string& path, std::string& error);
   bool run(ReplayFeed& feed, std::string& error) override;
-  /// Runs the drivers over a second copy of the recording up to the first sample.
-  bool first_sample_has_mag() override;
+  void full_scale(double& accel_m_s2, double& gyro_rad_s) const override;
   SourceCounters counters() const override { return counters_; }
   std::string note() const override;
 

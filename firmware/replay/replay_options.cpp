@@ -46,6 +46,28 @@ bool parse_outages(const std::string& text, std::vector<Outage>& out, std::strin
   return true;
 }
 
+est::EffectSet default_effects() {
+  est::EffectSet s;
+  s.add(est::Effect::AccelBias);
+  s.add(est::Effect::GyroBias);
+  s.add(est::Effect::GpsPositionBias);
+  s.add(est::Effect::GpsLatency);
+  return s;
+}
+
+bool resolve_effects(const std::string& added, const std::string& removed, est::EffectSet& out, std::string& error) {
+  est::EffectSet add, remove;
+  if (!parse_effects(added, add, error)) return false;
+  if (removed == "none" || removed == "all") {
+    remove = default_effects();
+  } else if (!parse_effects(removed, remove, error)) {
+    error = "--without-effects" + error.substr(error.find(':'));
+    return false;
+  }
+  out.bits = (default_effects().bits | add.bits) & ~remove.bits;
+  return true;
+}
+
 bool parse_effects(const std::string& text, est::EffectSet& out, std::string& error) {
   out = {};
   if (text.empty()) return true;

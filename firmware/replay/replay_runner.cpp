@@ -48,8 +48,13 @@ class ReplayObserver final : public est::NavObserver {
     compare_with_truth(o);
     prev_ = o;
     have_prev_ = true;
+    flags_ |= o.flags;  // events between two rows are kept
+    for (std::size_t i = 0; i < est::kAidingSourceCount; ++i) test_ratio_[i] = std::max(test_ratio_[i], o.test_ratio[i]);
+    warn(o);
     if (o.nav.t_s + 1e-9 >= next_write_t_) {
       write_nav(o);
+      flags_ = 0;
+      test_ratio_.fill(0.0);
       next_write_t_ = period_ > 0.0 ? std::floor(o.nav.t_s / period_ + 1.0 + 1e-9) * period_ : o.nav.t_s;
     }
   }
@@ -78,8 +83,29 @@ class ReplayObserver final : public est::NavObserver {
   }
 
   double first_t() const { return first_t_; }
+  std::uint32_t last_flags() const { return prev_.flags; }
 
  private:
+  /// One line on stderr when the solution is reset or lost (the first few).
+  void warn(const est::NavOutput& o) {
+    namespace f = est::nav_flag;
+    const bool lost = o.flags & f::kLost;
+    const std::uint32_t resets = o.flags & (f::kPositionReset | f::kVelocityReset | f::kYawReset);
+    if (resets && warnings_ < kMaxWarnings) {
+      ++warnings_;
+      std::fprintf(stderr, "sinu replay: warning: t=%.3f s: solution reset to GNSS (%s%s%s)\n", o.nav.t_s,
+                   (resets & f::kPositionReset) ? "position " : "", (resets & f::kVelocityReset) ? "velocity " : "",
+                   (resets & f::kYawReset) ? "yaw" : "");
+    }
+    if (lost && !was_lost_ && warnings_ < kMaxWarnings) {
+      ++warnings_;
+      std::fprintf(stderr, "sinu replay: warning: t=%.3f s: solution LOST (GNSS position and velocity rejected)\n",
+                   o.nav.t_s);
+    }
+    was_lost_ = lost;
+  }
+  static constexpr int kMaxWarnings = 5;
+
   void advance_truth() {
     have_truth_ = false;
     if (!truth_) return;
@@ -138,15 +164,21 @@ class ReplayObserver final : public est::NavObserver {
       w.comma();
       w.number(o.sensor_error_sigma[a], 9);
     }
+    w.comma();
+    w.number(static_cast<double>(flags_), 0);
+    for (std::size_t i = 0; i < est::kAidingSourceCount; ++i) {
+      w.comma();
+      w.number(test_ratio_[i], 4);
+    }
     const est::ErrorStateFilter& f = nav_.filter();
     for (std::size_t e = 0; e < est::kEffectCount; ++e) {
       const auto eff = static_cast<est::Effect>(e);
-      if (!f.layout().has(eff)) continue;
+      if (!f.layout().carries(eff)) continue;
       for (Eigen::Index i = 0; i < est::kEffectDims[e]; ++i) {
+        w.comma();  // a reserved effect not yet switched on: empty fields ("unknown")
+        if (f.layout().has(eff)) w.number(f.effect(eff, i), 9);
         w.comma();
-        w.number(f.effect(eff, i), 9);
-        w.comma();
-        w.number(f.effect_sigma(eff, i), 9);
+        if (f.layout().has(eff)) w.number(f.effect_sigma(eff, i), 9);
       }
     }
     w.end_row();
@@ -165,15 +197,20 @@ class ReplayObserver final : public est::NavObserver {
   bool have_prev_ = false;
   double next_write_t_ = -1e300;
   double first_t_ = NAN;
+  std::uint32_t flags_ = 0;
+  std::array<double, est::kAidingSourceCount> test_ratio_{};
+  int warnings_ = 0;
+  bool was_lost_ = false;
 };
 
 std::string nav_header(const est::StateLayout& layout) {
   std::string h = "t,lat,lon,h,vn,ve,vd,roll,pitch,yaw,sigma_pn_m,sigma_pe_m,sigma_pd_m,sigma_vn,sigma_ve,sigma_vd,"
                   "sigma_att_n_deg,sigma_att_e_deg,sigma_att_d_deg,"
                   "err_ax,err_ay,err_az,err_gx,err_gy,err_gz,sigma_err_ax,sigma_err_ay,sigma_err_az,sigma_err_gx,"
-                  "sigma_err_gy,sigma_err_gz";
+                  "sigma_err_gy,sigma_err_gz,flags,test_ratio_gnss_position,test_ratio_gnss_velocity,"
+                  "test_ratio_magnetometer";
   for (std::size_t e = 0; e < est::kEffectCount; ++e) {
-    if (!layout.has(static_cast<est::Effect>(e))) continue;
+    if (!layout.carries(static_cast<est::Effect>(e))) continue;
     for (Eigen::Index i = 0; i < est::kEffectDims[e]; ++i) {
       const std::string component = est::effect_component_name(static_cast<est::Effect>(e), i);
       const std::string name = std::string(est::kEffectNames[e]) + (component.empty() ? "" : "_" + component);
@@ -187,7 +224,8 @@ std::string nav_header(const est::StateLayout& layout) {
 /// epochs thinned by --gps-period and --outage, IMU samples as they come.
 class NavigatorFeed final : public ReplayFeed {
  public:
-  NavigatorFeed(est::Navigator& nav, const ReplayOptions& opt) : nav_(nav), opt_(opt) {}
+  NavigatorFeed(est::Navigator& nav, NavMetrics& metrics, const ReplayOptions& opt)
+      : nav_(nav), metrics_(metrics), opt_(opt) {}
 
   void on_fix(const drivers::GpsFix& f) override {
     ++epochs;
@@ -208,6 +246,7 @@ class NavigatorFeed final : public ReplayFeed {
     last_used_t_ = t_valid;
     ++used;
     nav_.push_gnss(z);
+    metrics_.add_gnss({t_valid, z.lat_rad, z.lon_rad, z.h_m});
   }
 
   void on_imu(const est::ImuSample& s) override {
@@ -222,6 +261,7 @@ class NavigatorFeed final : public ReplayFeed {
 
  private:
   est::Navigator& nav_;
+  NavMetrics& metrics_;
   const ReplayOptions& opt_;
   double last_used_t_ = -1e300;
 };
@@ -240,17 +280,21 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
     prefilter = est::make_wavelet_prefilter(*est::wavelet::parse_wavelet(denoiser.name), denoiser.levels);
   }
   cfg.effects = opt.effects;
+  cfg.use_mag = opt.use_mag;
   cfg.mag_sigma_uT = opt.mag_sigma_uT;
-  if (opt.use_mag && std::isfinite(opt.mag_declination_deg)) {
-    cfg.alignment.mag_heading = true;
+  cfg.gnss_velocity_noise.enabled = opt.adapt_velocity_noise;
+  cfg.mag_noise.enabled = opt.adapt_mag_noise;
+  cfg.alignment.use_mag = opt.use_mag;
+  if (std::isfinite(opt.mag_declination_deg)) {
+    cfg.alignment.declination_known = true;
     cfg.alignment.mag_declination_rad = opt.mag_declination_deg * kDegToRad;
   }
   const std::unique_ptr<ReplaySource> source = open_replay_source(opt.in_dir, opt.imu, error);
   if (!source) return false;
-  if (opt.use_mag && source->first_sample_has_mag()) {  // the 3-axis model needs both (PX4 EKF2 likewise)
-    cfg.effects.add(est::Effect::MagEarthField);
-    cfg.effects.add(est::Effect::MagHardIron);
-  }
+  // Full scales for the clipping screen: the driver's for a recording, the user's for a dataset.
+  cfg.screen.accel_range_m_s2 = opt.accel_range_m_s2;
+  cfg.screen.gyro_range_rad_s = opt.gyro_range_rad_s;
+  source->full_scale(cfg.screen.accel_range_m_s2, cfg.screen.gyro_range_rad_s);
   cfg.gate_sigma = opt.gate_sigma;
   cfg.gps_latency_s = opt.gps_latency_s;
   cfg.lever_arm_b_m = opt.lever_arm_b_m;
@@ -274,14 +318,14 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
 
   auto navigator = std::make_unique<est::Navigator>();
   NavMetrics metrics;
-  metrics.init(opt.outages);
+  metrics.init(opt.outages, opt.lever_arm_b_m);
   ReplayObserver observer(*navigator, metrics, nav_out, innov_out, has_truth ? &truth : nullptr,
                           opt.nav_rate_hz > 0.0 ? 1.0 / opt.nav_rate_hz : 0.0);
   navigator->init(cfg, &observer, prefilter.get());
   nav_out.text(nav_header(navigator->filter().layout()));
   innov_out.text("t,source,component,innovation,sigma,test_ratio,accepted\n");
 
-  NavigatorFeed feed(*navigator, opt);
+  NavigatorFeed feed(*navigator, metrics, opt);
   if (!source->run(feed, error)) return false;
   totals.imu_samples = feed.imu_samples;
   totals.note = source->note();
@@ -356,10 +400,32 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
   sj["rejected"] = rejected;
   sj["accepted"] = accepted;
   sj["gnss"] = {{"epochs", epochs}, {"used", used}, {"dropped_outage", dropped_outage}, {"dropped_period", dropped_period},
-                {"late", c.gnss_late}, {"overflow", c.gnss_overflow}, {"resets", c.gnss_resets}};
+                {"late", c.gnss_late}, {"overflow", c.gnss_overflow}};
   sj["corrupt_sentences"] = src.corrupt_sentences;
   sj["imu"] = {{"incomplete_rows", src.incomplete_rows}, {"non_increasing", c.imu_non_increasing}, {"gaps", c.imu_gaps},
-               {"invalid", c.imu_invalid}};
+               {"gap_total_s", c.imu_gap_total_s}, {"longest_gap_s", c.imu_longest_gap_s},
+               {"invalid", c.imu_invalid}, {"clipped_samples", c.imu_clipped_samples}};
+  // Health: whether this solution can be trusted, before any figure of merit.
+  const bool lost_now = navigator->aligned() && (observer.last_flags() & est::nav_flag::kLost);
+  const char* status = !navigator->aligned()  ? "not_aligned"
+                       : lost_now             ? "lost"
+                       : c.lost_total_s > 0.0 ? "lost_and_recovered"
+                       : c.resets() > 0       ? "reset"
+                                              : "ok";
+  sj["health"] = {{"status", status},
+                  {"lost_s", c.lost_total_s},
+                  {"first_lost_t", c.lost_total_s > 0.0 ? json(c.first_lost_t_s) : json(nullptr)},
+                  {"resets", {{"position", c.position_resets}, {"velocity", c.velocity_resets}, {"yaw", c.yaw_resets}}},
+                  {"first_reset_t", c.resets() ? json(c.first_reset_t_s) : json(nullptr)},
+                  {"gnss_timeouts", c.gnss_timeouts},
+                  {"gnss_timeout_s", c.gnss_timeout_total_s}};
+  sj["noise"] = {{"gnss_velocity_sigma_m_s", navigator->gnss_velocity_sigma_m_s()},
+                 {"gnss_velocity_learnt", opt.adapt_velocity_noise},
+                 {"magnetometer_sigma_uT", navigator->mag_sigma_uT()},
+                 {"magnetometer_learnt", opt.adapt_mag_noise}};
+  sj["gnss_only_rmse"] = {{"pos_h_m", rms(metrics.gnss_sum_h2, metrics.gnss_compared)},
+                          {"pos_v_m", rms(metrics.gnss_sum_v2, metrics.gnss_compared)},
+                          {"fixes", metrics.gnss_compared}};
   json sens = json::object();
   static constexpr const char* kAxes[] = {"ax", "ay", "az", "gx", "gy", "gz"};
   for (Eigen::Index a = 0; a < est::kSensorAxes; ++a) {

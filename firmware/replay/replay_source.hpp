@@ -34,9 +34,9 @@ class ReplaySource {
   /// Feeds everything, in order, once. False with `error` (naming the file,
   /// and line where known) on a read error.
   virtual bool run(ReplayFeed& feed, std::string& error) = 0;
-  /// Whether the first IMU sample carries a magnetometer reading (decides
-  /// the magnetometer states before run()).
-  virtual bool first_sample_has_mag() = 0;
+  /// The IMU's full scales where the source knows them (a recording: the
+  /// driver's configuration); a dataset leaves the caller's values.
+  virtual void full_scale(double& /*accel_m_s2*/, double& /*gyro_rad_s*/) const {}
   virtual SourceCounters counters() const = 0;
   /// The truth.csv used when none is given ("" for none).
   virtual std::string default_truth() const { return {}; }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "host_tests/support/run_process.hpp"
@@ -13,7 +14,7 @@
 namespace sinu::test {
 namespace {
 
-nlohmann::json diagnose(const TempDir& dir, const std::string& effects_json) {
+nlohmann::json diagnose(const TempDir& dir, const std::string& effects_json, const std::vector<std::string>& extra = {}) {
   const std::string ds = (dir.path() / "flight").string(), out = (dir.path() / "diag").string();
   std::vector<std::string> sim = {"simulate", "flight", "--out", ds, "--seed", "9", "--duration", "600"};
   if (!effects_json.empty()) {
@@ -23,7 +24,9 @@ nlohmann::json diagnose(const TempDir& dir, const std::string& effects_json) {
   }
   EXPECT_EQ(run_sinu(sim).exit_code, 0);
   // One round keeps the test short; the simulator's base GPS latency (45 ms) is known.
-  const auto r = run_sinu({"diagnose", "--in", ds, "--gps-latency", "0.045", "--rounds", "1", "--out", out});
+  std::vector<std::string> args = {"diagnose", "--in", ds, "--gps-latency", "0.045", "--rounds", "1", "--out", out};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const auto r = run_sinu(args);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("report: "), std::string::npos) << r.out;
   std::ifstream in(out + "/diagnosis.json");
@@ -32,9 +35,26 @@ nlohmann::json diagnose(const TempDir& dir, const std::string& effects_json) {
 
 const nlohmann::json& first_candidate(const nlohmann::json& d) { return d["rounds"][0]["candidates"][0]; }
 
-TEST(Diagnose, NamesAHiddenGpsLatencyAndTheErrorFalls) {
+TEST(Diagnose, TheDefaultModelEstimatesAHiddenGpsLatency) {
+  // gps_latency is one of the default states: the baseline finds it and nothing is missing.
   TempDir dir;
   const auto d = diagnose(dir, R"({"gps_latency": 0.2})");
+  EXPECT_EQ(d["missing_effects"].size(), 0u) << d.dump(1);
+  std::ifstream in((dir.path() / "diag" / "baseline" / "summary.json").string());
+  const auto s = nlohmann::json::parse(in);
+  bool found = false;
+  for (const auto& e : s["effects"]) {
+    if (e["name"] != "gps_latency") continue;
+    found = true;
+    // 0.045 s base + 0.2 s hidden; sigma ~0.005 s: 0.02 s is 4 sigma.
+    EXPECT_NEAR(e["estimate"][0].get<double>(), 0.245, 0.02);
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(Diagnose, NamesAHiddenGpsLatencyLeftOutOfTheModelAndTheErrorFalls) {
+  TempDir dir;
+  const auto d = diagnose(dir, R"({"gps_latency": 0.2})", {"--without-effects", "gps_latency"});
   ASSERT_EQ(d["missing_effects"].size(), 1u) << d.dump(1);
   EXPECT_EQ(d["missing_effects"][0], "gps_latency");
   // Estimated total latency = 0.045 s base + 0.2 s hidden; its sigma is ~0.007 s: 0.02 s is ~3 sigma.

@@ -4,6 +4,7 @@
 #include <Eigen/Cholesky>
 #include <numbers>
 #include <random>
+#include <cstdlib>
 
 #include "host_tests/estimator/navigator_run.hpp"
 
@@ -42,6 +43,63 @@ TEST(Navigator, PerfectImuAndGpsThirtyMinuteFlight) {
   EXPECT_LT(att_rms_deg, 0.05);
   EXPECT_EQ(stats.rejected, 0u);
 }
+
+// The magnetometer through turns, climbs and speed changes, with the Earth
+// field and the hard iron as states and the declination not given: the
+// heading at rest comes from the field (off by the declination, sigma 20 deg),
+// the run-up corrects it by some 11 deg, and then the field states must not
+// pull the attitude away. Before the field error was made invariant (and
+// turned with such a correction) a 0.4 uT magnetometer on perfect inertial
+// sensors gave 1-4 deg attitude errors in the first turns.
+struct MagCase {
+  double mag_noise_uT, gyro_noise_rad_s;
+  Eigen::Vector3d hard_iron_uT;
+  double max_att_rms_deg;
+};
+class MagnetometerThroughTurns : public ::testing::TestWithParam<MagCase> {};
+
+TEST_P(MagnetometerThroughTurns, KeepsTheAttitude) {
+  const MagCase c = GetParam();
+  const auto truth = AnalyticFlight(FlightProfile{}).sample(40.0, 900.0);
+  const auto gnss = AnalyticFlight::gnss(truth, 8, 0.0, Eigen::Vector3d::Zero(), 0.5, 0.1);
+  const Eigen::Vector3d field_n(19.0, -3.6, -45.6);  // uT; declination -10.7 deg
+  std::vector<est::ImuSample> imu = imu_of(truth);
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> n01;
+  for (std::size_t i = 0; i < imu.size(); ++i) {
+    imu[i].has_mag = true;
+    imu[i].mag_b_uT = truth[i].nav.C_nb().transpose() * field_n + c.hard_iron_uT;
+    for (Eigen::Index k = 0; k < 3; ++k) {
+      imu[i].mag_b_uT(k) += c.mag_noise_uT * n01(rng);
+      imu[i].angular_rate_b_rad_s(k) += c.gyro_noise_rad_s * n01(rng);
+    }
+  }
+  est::NavigatorConfig cfg;
+  cfg.mag_sigma_uT = std::max(0.1, c.mag_noise_uT);
+  RunStats stats;
+  TruthComparer cmp(truth, 40.0, stats);
+  est::Navigator nav;
+  nav.init(cfg, &cmp, nullptr);
+  feed(nav, imu, gnss);
+  ASSERT_TRUE(nav.aligned());
+  ASSERT_TRUE(nav.filter().layout().has(est::Effect::MagEarthField));
+  const double from = stats.align_t + 120.0;  // the run-up and the first turn have found the heading
+  const double att_rms_deg = rms_after(stats.t, stats.att_err, from) * kRadToDeg;
+  std::printf("attitude RMS %.4f deg, magnetometer accepted %llu rejected %llu\n", att_rms_deg,
+              static_cast<unsigned long long>(nav.counters().accepted[2]),
+              static_cast<unsigned long long>(nav.counters().rejected[2]));
+  EXPECT_LT(att_rms_deg, c.max_att_rms_deg);
+  EXPECT_LT(nav.counters().rejected[2], nav.counters().accepted[2] / 100) << "the field stays consistent";
+}
+
+// Limits: perfect sensors: GNSS alone reaches 0.002 deg here (PerfectImuAndGps...),
+// the field must add nothing (measured 0.0003). With noise the filter's own
+// attitude sigma, from its default gyro model, is ~0.2 deg: 0.5 deg is 2.5 sigma.
+INSTANTIATE_TEST_SUITE_P(Cases, MagnetometerThroughTurns,
+                         ::testing::Values(MagCase{0.0, 0.0, Eigen::Vector3d::Zero(), 0.01},
+                                           MagCase{0.4, 0.0, Eigen::Vector3d::Zero(), 0.5},
+                                           MagCase{0.4, 1.6e-3, Eigen::Vector3d::Zero(), 0.5},
+                                           MagCase{0.4, 1.6e-3, Eigen::Vector3d(15.0, -10.0, 8.0), 0.5}));
 
 TEST(Navigator, CovarianceStaysExactlySymmetricAndPositiveDefinite) {
   const auto truth = AnalyticFlight(FlightProfile{}).sample(40.0, 400.0);

@@ -2,9 +2,11 @@
 // outputs, bad input, and the bounded allocation count of the whole replay.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "firmware/replay/replay_runner.hpp"
@@ -45,8 +47,10 @@ TEST(Replay, WritesNavInnovationsAndSummary) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto s = read_json(out + "/summary.json");
   EXPECT_TRUE(s["aligned"].get<bool>());
-  // 15 GM states + the magnetometer's Earth field and hard iron (3 + 3): the simulated imu.csv has one.
-  EXPECT_EQ(s["states"].get<int>(), 15 + 6);
+  // 15 GM states + the default effects (accel and gyro turn-on bias, GPS position bias: 3 each; GPS
+  // latency: 1) + the magnetometer's Earth field and hard iron (3 + 3): the simulated imu.csv has one.
+  EXPECT_EQ(s["states"].get<int>(), 15 + 10 + 6);
+  EXPECT_EQ(s["health"]["status"], "ok");
   // 10 Hz from alignment (GPS course at the take-off run, ~65 s in) to the end: ~2350.
   EXPECT_GT(s["accepted"]["magnetometer"].get<int>(), 2000);
   // GPS errors of the simulator are ~1.3 m per axis; with GPS the solution sits within a few metres.
@@ -58,6 +62,8 @@ TEST(Replay, WritesNavInnovationsAndSummary) {
   std::string header;
   std::getline(nav, header);
   EXPECT_EQ(header.rfind("t,lat,lon,h,vn,ve,vd,roll,pitch,yaw,", 0), 0u) << "truth.csv columns first";
+  EXPECT_NE(header.find(",flags,test_ratio_gnss_position,test_ratio_gnss_velocity,test_ratio_magnetometer"),
+            std::string::npos);
   std::ifstream inn(out + "/innovations.csv");
   std::getline(inn, header);
   EXPECT_EQ(header, "t,source,component,innovation,sigma,test_ratio,accepted");
@@ -70,55 +76,66 @@ TEST(Replay, ArModelHasNinePlusSixPStates) {
   const auto r = run_sinu({"replay", "--in", ds, "--model", "ar", "--ar-order", "3", "--effects", "lever_arm,gps_latency",
                            "--no-mag", "--out", out});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  // Without --calib the built-in default is AR(1) (--ar-order picks from calib.json): 9 + 6*1 + 3 + 1
-  // (+ 3 for the Earth field when the magnetometer is fused; --no-mag here).
-  EXPECT_EQ(read_json(out + "/summary.json")["states"].get<int>(), 9 + 6 * 1 + 4);
+  // Without --calib the built-in default is AR(1) (--ar-order picks from calib.json): 9 + 6*1, the
+  // default effects 10 (gps_latency among them), the lever arm 3 (+ 6 for the magnetometer; --no-mag here).
+  EXPECT_EQ(read_json(out + "/summary.json")["states"].get<int>(), 9 + 6 * 1 + 10 + 3);
 }
 
-TEST(Replay, MagnetometerHeadingAlignsAtRestWhenTheDeclinationIsGiven) {
+/// Heading error and its sigma [deg] of the first nav.csv row, against truth.csv.
+struct FirstHeading {
+  double t = NAN, error_deg = NAN, sigma_deg = NAN;
+};
+FirstHeading first_heading(const std::string& nav_csv, const std::string& truth_csv) {
+  std::ifstream nav(nav_csv), truth(truth_csv);
+  std::string header, line;
+  std::getline(nav, header);
+  std::getline(nav, line);
+  auto cells = [](const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream ss(text);
+    for (std::string c; std::getline(ss, c, ',');) out.push_back(c);
+    return out;
+  };
+  const auto names = cells(header), row = cells(line);
+  const auto col = [&](const char* name) {
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  FirstHeading h;
+  h.t = std::stod(row[0]);
+  h.sigma_deg = std::stod(row[col("sigma_att_d_deg")]);
+  std::getline(truth, line);
+  while (std::getline(truth, line)) {
+    const auto tr = cells(line);
+    if (std::stod(tr[0]) + 1e-6 < h.t) continue;
+    h.error_deg = std::remainder(std::stod(row[col("yaw")]) - std::stod(tr[9]), 360.0);
+    break;
+  }
+  return h;
+}
+
+TEST(Replay, MagnetometerHeadingAtRestWithAndWithoutTheDeclination) {
   TempDir dir;
   const std::string ds = (dir.path() / "f").string(), hidden = (dir.path() / "h.json").string();
   ASSERT_EQ(run_sinu({"simulate", "flight", "--out", ds, "--seed", "7", "--duration", "300", "--hidden-out", hidden}).exit_code, 0);
   // The site's declination, as a user would take it from a field model (WMM) for the place.
   const auto F = read_json(hidden)["earth_field_ned_uT"];
   const double decl_deg = std::atan2(F[1].get<double>(), F[0].get<double>()) * 180.0 / 3.141592653589793;
-  const std::string mag = (dir.path() / "mag").string(), course = (dir.path() / "course").string();
+  const std::string known = (dir.path() / "known").string(), unknown = (dir.path() / "unknown").string();
   ASSERT_EQ(run_sinu({"replay", "--in", ds, "--model", "gm", "--mag-declination", std::to_string(decl_deg), "--quiet",
-                      "--out", mag}).exit_code, 0);
-  ASSERT_EQ(run_sinu({"replay", "--in", ds, "--model", "gm", "--quiet", "--out", course}).exit_code, 0);
+                      "--out", known}).exit_code, 0);
+  ASSERT_EQ(run_sinu({"replay", "--in", ds, "--model", "gm", "--quiet", "--out", unknown}).exit_code, 0);
   const double t0 = first_t(ds);
-  const double t_mag = read_json(mag + "/summary.json")["aligned_at_s"].get<double>();
-  const double t_course = read_json(course + "/summary.json")["aligned_at_s"].get<double>();
-  // Levelling needs its 2 s window at rest, then the next fix; the GNSS course waits for the take-off run.
-  EXPECT_LT(t_mag - t0, 3.0);
-  EXPECT_GT(t_course - t_mag, 10.0);
-  // The first nav.csv row's heading against truth: the magnetometer's noise (0.4 uT of ~35 uT
-  // horizontal, averaged over the window) and levelling error keep it well under 2 deg.
-  std::ifstream nav(mag + "/nav.csv"), truth(ds + "/truth.csv");
-  std::string line;
-  std::getline(nav, line);
-  std::getline(nav, line);
-  const double t_nav = std::stod(line.substr(0, line.find(',')));
-  double yaw_nav = 0.0;
-  {
-    std::stringstream ss(line);
-    std::string cell;
-    for (int i = 0; i <= 9; ++i) std::getline(ss, cell, ',');
-    yaw_nav = std::stod(cell);
-  }
-  std::getline(truth, line);
-  double yaw_truth = NAN;
-  while (std::getline(truth, line)) {
-    std::stringstream ss(line);
-    std::string cell;
-    std::getline(ss, cell, ',');
-    if (std::stod(cell) + 1e-6 < t_nav) continue;
-    for (int i = 1; i <= 9; ++i) std::getline(ss, cell, ',');
-    yaw_truth = std::stod(cell);
-    break;
-  }
-  const double d = std::remainder(yaw_nav - yaw_truth, 360.0);
-  EXPECT_LT(std::abs(d), 2.0) << "nav yaw " << yaw_nav << " truth " << yaw_truth;
+  // Both align at rest, from the magnetometer: the levelling's 2 s window, then the next fix.
+  for (const std::string& out : {known, unknown})
+    EXPECT_LT(read_json(out + "/summary.json")["aligned_at_s"].get<double>() - t0, 3.0) << out;
+  // With the declination: the magnetometer's noise (0.4 uT of ~35 uT horizontal, averaged over the
+  // window) and levelling error keep the heading well under 2 deg.
+  const FirstHeading k = first_heading(known + "/nav.csv", ds + "/truth.csv");
+  EXPECT_LT(std::abs(k.error_deg), 2.0);
+  // Without it the heading is off by the declination, and the filter says so: its sigma covers it.
+  const FirstHeading u = first_heading(unknown + "/nav.csv", ds + "/truth.csv");
+  EXPECT_NEAR(std::abs(u.error_deg), std::abs(decl_deg), 2.0);
+  EXPECT_LT(std::abs(u.error_deg), 3.0 * u.sigma_deg) << "an overconfident heading would not converge";
 }
 
 TEST(Replay, MagnetometerHardIronIsEstimatedAndHeadingStaysRight) {

@@ -32,14 +32,10 @@ Measurement gnss_position_measurement(const ErrorStateFilter& filter, const NavS
   if (L.has(Effect::LeverArm)) m.H.block(0, L.of(Effect::LeverArm).start, 3, 3) = -C;
   if (L.has(Effect::GpsLatency)) m.H.block(0, L.of(Effect::GpsLatency).start, 3, 1) = nav.v_n_m_s;
   if (bias) m.H.block(0, L.of(Effect::GpsPositionBias).start, 3, 3) = -Eigen::Matrix3d::Identity();
-  // With the bias states GST's sigma is split: its correlated part lives in
-  // the bias, the rest is white (kept at least 30 % of GST's, so an
-  // optimistic GST cannot make the update overconfident).
+  // With the bias states the fix's variance is split: its correlated part
+  // lives in the bias states, the rest is white.
   Eigen::Vector3d var = z.sigma_ned_m.cwiseAbs2();
-  if (bias) {
-    const Eigen::Vector3d gm2 = filter.tuning().gps_bias_sigma_ned_m.cwiseAbs2();
-    var = (var - gm2).cwiseMax(0.09 * var);
-  }
+  if (bias) var *= 1.0 - filter.tuning().gps_bias_variance_fraction;
   m.R = var.asDiagonal();
   return m;
 }

@@ -15,7 +15,8 @@ Measurement magnetometer_measurement(const ErrorStateFilter& filter, const NavSt
   m.gate_sigma = gate_sigma;
   m.innovation = S * u + filter.mag_hard_iron_b_uT() - mag_b_uT;
   m.H = MeasJacobian::Zero(3, L.dim);
-  m.H.block(0, L.att.start, 3, 3) = -S * C_bn * skew(F_n);
+  // y = -S C_bn [F x] phi - S C_bn dF - dh = -S C_bn e - dh: with the invariant
+  // field error e (state_layout.hpp) the attitude drops out.
   m.H.block(0, L.of(Effect::MagEarthField).start, 3, 3) = -S * C_bn;
   if (L.has(Effect::MagSoftIron)) {  // d(S u)/dD for D = [xx yy zz xy xz yz]
     Eigen::Matrix<double, 3, 6> J;

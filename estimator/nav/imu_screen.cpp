@@ -1,0 +1,34 @@
+#include "estimator/nav/imu_screen.hpp"
+
+#include <cmath>
+
+namespace sinu::est {
+
+void ImuScreen::configure(const ImuScreenConfig& cfg) {
+  cfg_ = cfg;
+  have_last_ = false;
+  repeats_.fill(0);
+}
+
+ScreenVerdict ImuScreen::screen(const ImuSample& raw, std::uint8_t& clipped_axes) {
+  clipped_axes = 0;
+  if (!std::isfinite(raw.t_s) || !raw.specific_force_b_m_s2.allFinite() || !raw.angular_rate_b_rad_s.allFinite())
+    return ScreenVerdict::NonFinite;
+  if (have_last_ && !(raw.t_s > last_t_s_)) return ScreenVerdict::NotIncreasing;
+  for (std::size_t a = 0; a < 6; ++a) {
+    const bool accel = a < 3;
+    const auto i = static_cast<Eigen::Index>(a % 3);
+    const double v = accel ? raw.specific_force_b_m_s2(i) : raw.angular_rate_b_rad_s(i);
+    const double range = accel ? cfg_.accel_range_m_s2 : cfg_.gyro_range_rad_s;
+    const double flat = accel ? cfg_.flat_top_accel_m_s2 : cfg_.flat_top_rate_rad_s;
+    repeats_[a] = (have_last_ && v == last_value_[a] && std::abs(v) > flat) ? repeats_[a] + 1 : 0;
+    last_value_[a] = v;
+    const bool at_range = range > 0.0 && std::abs(v) >= cfg_.clip_fraction * range;
+    if (at_range || repeats_[a] + 1 >= cfg_.flat_top_repeats) clipped_axes |= static_cast<std::uint8_t>(1u << a);
+  }
+  have_last_ = true;
+  last_t_s_ = raw.t_s;
+  return ScreenVerdict::Keep;
+}
+
+}  // namespace sinu::est

@@ -1,0 +1,66 @@
+#pragma once
+// The navigator's health, per output and in total. Every output carries
+// `flags`: state bits (what holds now) and event bits (what happened since
+// the previous output). Writers OR the flags of the outputs they thin out,
+// so no event between two nav.csv rows is lost.
+#include <array>
+#include <cstdint>
+
+namespace sinu::est {
+
+enum class AidingSource : std::uint8_t { GnssPosition, GnssVelocity, Magnetometer };
+inline constexpr std::size_t kAidingSourceCount = 3;
+inline constexpr std::array<const char*, kAidingSourceCount> kAidingSourceNames = {"gnss_position", "gnss_velocity",
+                                                                                   "magnetometer"};
+
+namespace nav_flag {
+enum : std::uint32_t {
+  // state
+  kAligned = 1u << 0,        // a navigation solution exists
+  kGnssTimeout = 1u << 1,    // no GNSS position for gnss_timeout_s: dead reckoning
+  kMagTimeout = 1u << 2,     // magnetometer states on, no field sample for mag_timeout_s
+  kLost = 1u << 3,           // GNSS position and velocity both rejected for lost_after_s: the filter is wrong
+  kGnssSuspect = 1u << 4,    // GNSS position rejected while its velocity agrees: a GNSS jump, held off
+  kClipping = 1u << 5,       // an IMU axis is (or was within the filter's memory of it) at full scale
+  // events
+  kGnssPosFused = 1u << 8,
+  kGnssPosRejected = 1u << 9,
+  kGnssVelFused = 1u << 10,
+  kGnssVelRejected = 1u << 11,
+  kMagFused = 1u << 12,
+  kMagRejected = 1u << 13,
+  kPositionReset = 1u << 14,  // position (and velocity) reset to GNSS
+  kVelocityReset = 1u << 15,
+  kYawReset = 1u << 16,
+  kImuGap = 1u << 17,         // the interval to this sample was longer than a few sample periods
+  kImuDropped = 1u << 18,     // a raw sample was dropped: non-finite value, or time not increasing
+  kAlignedNow = 1u << 19,     // the alignment completed at this output
+};
+}  // namespace nav_flag
+
+/// The flags' names, bit by bit (nav.csv documents its `flags` column with them).
+inline constexpr std::array<const char*, 20> kNavFlagNames = {
+    "aligned", "gnss_timeout", "mag_timeout", "lost", "gnss_suspect", "clipping", "", "",
+    "gnss_pos_fused", "gnss_pos_rejected", "gnss_vel_fused", "gnss_vel_rejected", "mag_fused", "mag_rejected",
+    "position_reset", "velocity_reset", "yaw_reset", "imu_gap", "imu_dropped", "aligned_now"};
+
+struct NavCounters {
+  std::array<std::uint64_t, kAidingSourceCount> accepted{}, rejected{};
+  std::uint64_t gnss_late = 0;           // arrived after the horizon had passed its time
+  std::uint64_t gnss_overflow = 0;       // buffer full
+  std::uint64_t imu_non_increasing = 0;  // dropped: time not after the previous sample
+  std::uint64_t imu_invalid = 0;         // dropped: non-finite values
+  std::uint64_t imu_gaps = 0;            // intervals longer than a few sample periods
+  double imu_gap_total_s = 0.0;
+  double imu_longest_gap_s = 0.0;
+  std::uint64_t imu_clipped_samples = 0;  // raw samples with an axis at full scale
+  std::uint64_t position_resets = 0, velocity_resets = 0, yaw_resets = 0;
+  std::uint64_t gnss_timeouts = 0;       // times the GNSS position stopped for gnss_timeout_s
+  double gnss_timeout_total_s = 0.0;     // time spent dead reckoning
+  double lost_total_s = 0.0;             // time flagged lost
+  double first_lost_t_s = 0.0;           // valid when lost_total_s > 0
+  double first_reset_t_s = 0.0;          // valid when any reset happened
+  std::uint64_t resets() const { return position_resets + velocity_resets + yaw_resets; }
+};
+
+}  // namespace sinu::est
