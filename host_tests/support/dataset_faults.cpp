@@ -45,7 +45,8 @@ std::vector<FaultEffect> inject_faults(const fs::path& src, const fs::path& dst,
       fs::exists(meta_path) ? std::optional(faults::read_bytes(meta_path)) : std::nullopt;
 
   std::vector<FaultEffect> effects;
-  for (const auto& fault : fault_list) effects.push_back(std::visit([&](const auto& f) { return faults::apply(f, d); }, fault));
+  for (const auto& fault : fault_list)
+    effects.push_back(std::visit([&](const auto& f) { return faults::apply(f, d); }, fault));
 
   fs::create_directories(dst);
   faults::write_bytes(dst / "imu.csv", faults::join_lines(d.imu));

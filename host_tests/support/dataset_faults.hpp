@@ -109,8 +109,8 @@ struct DropLeadingSeconds {
   double seconds = 0.0;
 };
 
-using Fault = std::variant<GnssPositionJump, GnssGarbage, GnssOutage, ImuClip, ImuGap, ImuDropMagFirstRows,
-                           DropLeadingSeconds>;
+using Fault =
+    std::variant<GnssPositionJump, GnssGarbage, GnssOutage, ImuClip, ImuGap, ImuDropMagFirstRows, DropLeadingSeconds>;
 
 /// What one fault did: lines (rows) it rewrote and lines it removed, over all files.
 struct FaultEffect {

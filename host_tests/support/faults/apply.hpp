@@ -9,7 +9,7 @@ namespace sinu::test::faults {
 
 /// The files of a dataset folder; an absent optional file is nullopt.
 struct DatasetText {
-  TextLines imu;  // line 0 is the header
+  TextLines imu;                        // line 0 is the header
   std::optional<TextLines> gps, truth;  // truth: line 0 is the header
 };
 
@@ -25,14 +25,17 @@ FaultEffect apply(const ImuDropMagFirstRows& f, DatasetText& d);
 FaultEffect apply(const DropLeadingSeconds& f, DatasetText& d);
 
 /// Removes the lines whose time (leading number) satisfies `drop`; lines
-/// without a readable time stay. Returns how many went.
+/// without a readable time stay. A file that did not end in a terminator
+/// still does not when its last line goes. Returns how many went.
 template <class Pred>
 std::size_t remove_timed_lines(TextLines& lines, Pred drop) {
   const auto before = lines.size();
+  const bool open_end = !lines.empty() && lines.back().eol.empty();
   std::erase_if(lines, [&](const TextLine& l) {
     const auto t = leading_number(l.text);
     return t && drop(*t);
   });
+  if (open_end && !lines.empty()) lines.back().eol.clear();
   return before - lines.size();
 }
 

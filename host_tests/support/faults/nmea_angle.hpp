@@ -9,7 +9,7 @@
 namespace sinu::test::faults {
 
 struct AngleFormat {
-  int degree_digits;  // 2 for latitude, 3 for longitude
+  int degree_digits;        // 2 for latitude, 3 for longitude
   char positive, negative;  // 'N','S' or 'E','W'
 };
 inline constexpr AngleFormat kLatitude{2, 'N', 'S'};

@@ -30,9 +30,7 @@ char GarbageGenerator::random_non_printable() {
   }
 }
 
-void GarbageGenerator::force_non_printable(std::string& s) {
-  s[below(s.size())] = random_non_printable();
-}
+void GarbageGenerator::force_non_printable(std::string& s) { s[below(s.size())] = random_non_printable(); }
 
 std::string GarbageGenerator::noise() {
   std::string s(8 + below(113), ' ');

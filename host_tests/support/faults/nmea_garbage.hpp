@@ -24,8 +24,8 @@ class GarbageGenerator {
 
  private:
   std::uint64_t below(std::uint64_t n) { return rng_() % n; }  // bias < 2^-50 for our n
-  char random_byte();           // 0x00..0xFF except LF and CR
-  char random_non_printable();  // control or high byte, except LF and CR
+  char random_byte();                                          // 0x00..0xFF except LF and CR
+  char random_non_printable();                                 // control or high byte, except LF and CR
   std::string noise();
   std::string binary();
   std::string truncated(std::string_view original);
