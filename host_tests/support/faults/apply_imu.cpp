@@ -1,0 +1,62 @@
+// The imu.csv faults: clipping, gap, missing magnetometer; and the reboot
+// (DropLeadingSeconds), which cuts every file at the same instant.
+#include "host_tests/support/faults/apply.hpp"
+#include "host_tests/support/faults/imu_clip.hpp"
+
+namespace sinu::test::faults {
+
+namespace {
+
+constexpr std::size_t kMagX = 7;  // imu.csv: t,ax,ay,az,gx,gy,gz,mx,my,mz,temp
+
+}  // namespace
+
+FaultEffect apply(const ImuClip& f, DatasetText& d) {
+  FaultEffect e;
+  for (std::size_t i = 1; i < d.imu.size(); ++i) {
+    auto& line = d.imu[i];
+    const auto t = leading_number(line.text);
+    if (!t || !in_window(*t, f.start_s, f.duration_s)) continue;
+    auto fields = split_fields(line.text);
+    if (!clip_imu_row(fields, *t, f)) continue;
+    line.text = join_fields(fields);
+    ++e.changed;
+  }
+  return e;
+}
+
+FaultEffect apply(const ImuGap& f, DatasetText& d) {
+  return {0, remove_timed_lines(d.imu, [&](double t) { return in_window(t, f.start_s, f.duration_s); })};
+}
+
+FaultEffect apply(const ImuDropMagFirstRows& f, DatasetText& d) {
+  FaultEffect e;
+  for (std::size_t i = 1; i < d.imu.size() && i <= f.count; ++i) {
+    auto fields = split_fields(d.imu[i].text);
+    if (fields.size() < kMagX + 3) continue;
+    bool changed = false;
+    for (std::size_t c = kMagX; c < kMagX + 3; ++c) {
+      changed = changed || !fields[c].empty();
+      fields[c].clear();
+    }
+    if (!changed) continue;
+    d.imu[i].text = join_fields(fields);
+    ++e.changed;
+  }
+  return e;
+}
+
+FaultEffect apply(const DropLeadingSeconds& f, DatasetText& d) {
+  std::optional<double> t0;
+  for (std::size_t i = 1; i < d.imu.size() && !t0; ++i) t0 = leading_number(d.imu[i].text);
+  if (!t0) return {};
+  const double cut = *t0 + f.seconds;
+  auto before_cut = [&](double t) { return t < cut; };
+  FaultEffect e;
+  e.removed += remove_timed_lines(d.imu, before_cut);  // the header has no readable time: it stays
+  if (d.gps) e.removed += remove_timed_lines(*d.gps, before_cut);
+  if (d.truth) e.removed += remove_timed_lines(*d.truth, before_cut);
+  return e;
+}
+
+}  // namespace sinu::test::faults
