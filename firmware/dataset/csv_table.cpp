@@ -138,7 +138,7 @@ ReadStatus CsvReader::next(CsvRow& row) {
   switch (lines_.next(line)) {
     case LineReader::Status::Line: break;
     case LineReader::Status::End: return ReadStatus::End;
-    case LineReader::Status::TooLong: return fail(lines_.line_number() + 1, 0, "line too long");
+    case LineReader::Status::TooLong: return fail(lines_.line_number(), 0, "line too long");
     case LineReader::Status::IoError: return fail(lines_.line_number() + 1, 0, "read error");
   }
   const std::size_t n = schema_.columns.size();

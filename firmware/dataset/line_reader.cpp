@@ -39,6 +39,19 @@ bool LineReader::refill() {
   return got > 0;
 }
 
+LineReader::Status LineReader::skip_long_line() {
+  ++line_number_;
+  while (true) {
+    const void* nl = std::memchr(buffer_.get() + begin_, '\n', end_ - begin_);
+    if (nl != nullptr) {
+      begin_ = static_cast<std::size_t>(static_cast<const char*>(nl) - buffer_.get()) + 1;
+      return Status::TooLong;
+    }
+    begin_ = end_;  // all of it belongs to the long line
+    if (!refill()) return std::ferror(file_) ? Status::IoError : Status::TooLong;
+  }
+}
+
 LineReader::Status LineReader::next(std::string_view& line) {
   if (!file_) return Status::IoError;
   const std::size_t max_line = capacity_ - kChunk;
@@ -52,9 +65,9 @@ LineReader::Status LineReader::next(std::string_view& line) {
       line = std::string_view(buffer_.get() + begin_, len);
       begin_ = stop + 1;
       ++line_number_;
-      return Status::Line;
+      return len > max_line ? Status::TooLong : Status::Line;
     }
-    if (end_ - begin_ > max_line) return Status::TooLong;
+    if (end_ - begin_ > max_line) return skip_long_line();
     const std::size_t unread = end_ - begin_;
     if (!refill()) {
       if (std::ferror(file_)) return Status::IoError;

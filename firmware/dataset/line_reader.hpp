@@ -2,6 +2,8 @@
 // Streams a text file line by line through one fixed buffer: memory stays the
 // same whatever the file's length. Lines end in LF or CR LF; neither is part
 // of the returned view. The view is valid until the next call.
+// A line longer than max_line is TooLong wherever it falls in the file: it
+// is skipped up to its LF and counted as a line, and reading can go on.
 #include <cstddef>
 #include <cstdio>
 #include <memory>
@@ -29,6 +31,7 @@ class LineReader {
 
  private:
   bool refill();
+  Status skip_long_line();
 
   std::FILE* file_ = nullptr;
   std::size_t capacity_;

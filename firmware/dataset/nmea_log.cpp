@@ -28,10 +28,9 @@ ReadStatus NmeaLogReader::next(NmeaLogLine& out) {
     switch (lines_.next(line)) {
       case LineReader::Status::Line: break;
       case LineReader::Status::End: return ReadStatus::End;
-      case LineReader::Status::TooLong:
-        // Garbage without line breaks: nothing after it can be trusted to be framed.
-        error_ = Diagnostic{path_, lines_.line_number() + 1, 0, "line longer than 4 KiB"};
-        return ReadStatus::Error;
+      case LineReader::Status::TooLong:  // garbage without line breaks: counted, skipped to its end
+        skip(0, "line longer than 4 KiB");
+        continue;
       case LineReader::Status::IoError:
         error_ = Diagnostic{path_, lines_.line_number() + 1, 0, "read error"};
         return ReadStatus::Error;

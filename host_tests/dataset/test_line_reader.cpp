@@ -50,6 +50,35 @@ TEST(LineReader, ReportsALineLongerThanItsBound) {
   std::string_view line;
   ASSERT_EQ(r.next(line), LineReader::Status::Line);
   EXPECT_EQ(r.next(line), LineReader::Status::TooLong);
+  EXPECT_EQ(r.line_number(), 2u);
+  ASSERT_EQ(r.next(line), LineReader::Status::Line) << "reading goes on after the long line";
+  EXPECT_EQ(line, "after");
+  EXPECT_EQ(r.line_number(), 3u);
+}
+
+TEST(LineReader, ALongLineIsTooLongWhereverItFallsAgainstTheRefills) {
+  // A 5000-byte line with a 4 KiB bound once came back whole or as an error
+  // depending on whether it straddled the 256 KiB refill boundary.
+  for (std::size_t before : {std::size_t{0}, std::size_t{100}, std::size_t{255 * 1024}, std::size_t{256 * 1024 - 2500},
+                             std::size_t{256 * 1024 - 1}, std::size_t{300 * 1024}}) {
+    sinu::test::TempDir dir;
+    std::string pad;  // lines of at most 100 bytes, `before` bytes in all
+    std::size_t pad_lines = 0;
+    for (; pad.size() + 100 <= before; ++pad_lines) pad += std::string(99, 'p') + "\n";
+    if (pad.size() < before) {
+      pad += std::string(before - pad.size() - 1, 'q') + "\n";
+      ++pad_lines;
+    }
+    const auto path = dir.write("x.txt", pad + std::string(5000, 'g') + "\nafter\n");
+    LineReader r(4096);
+    ASSERT_TRUE(r.open(path));
+    std::string_view line;
+    for (std::size_t i = 0; i < pad_lines; ++i) ASSERT_EQ(r.next(line), LineReader::Status::Line) << before;
+    EXPECT_EQ(r.next(line), LineReader::Status::TooLong) << "padding " << before;
+    ASSERT_EQ(r.next(line), LineReader::Status::Line) << before;
+    EXPECT_EQ(line, "after") << before;
+    EXPECT_EQ(r.next(line), LineReader::Status::End);
+  }
 }
 
 TEST(LineReader, OpenFailsOnMissingFile) {

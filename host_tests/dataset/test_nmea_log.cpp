@@ -43,6 +43,23 @@ TEST(NmeaLog, CorruptLinesAndSentencesAreCountedAndSkipped) {
   EXPECT_EQ(r.first_corrupt().line, 3u);
 }
 
+TEST(NmeaLog, ALineOfGarbageLongerThan4KiBIsCountedNotFatal) {
+  sinu::test::TempDir dir;
+  const std::string text = std::string("100.000,") + kGga0 + "\n100.001," + std::string(5000, '\x7f') + "\n" +
+                           "100.250," + kGga1 + "\n";
+  const auto path = dir.write("gps.nmea", text);
+  GpsLogReader r;
+  ASSERT_TRUE(r.open(path));
+  sinu::drivers::GpsFix fix;
+  int fixes = 0;
+  ReadStatus st;
+  while ((st = r.next(fix)) == ReadStatus::Row) ++fixes;
+  EXPECT_EQ(st, ReadStatus::End) << r.error().to_string();
+  EXPECT_EQ(fixes, 2);
+  EXPECT_EQ(r.log().skipped_lines(), 1u);
+  EXPECT_EQ(r.log().first_skipped().line, 2u);
+}
+
 TEST(NmeaLog, WriterRoundTrip) {
   sinu::test::TempDir dir;
   {
