@@ -8,6 +8,7 @@ void ImuScreen::configure(const ImuScreenConfig& cfg) {
   cfg_ = cfg;
   have_last_ = false;
   repeats_.fill(0);
+  rail_.fill(0.0);
 }
 
 ScreenVerdict ImuScreen::screen(const ImuSample& raw, std::uint8_t& clipped_axes) {
@@ -20,11 +21,14 @@ ScreenVerdict ImuScreen::screen(const ImuSample& raw, std::uint8_t& clipped_axes
     const auto i = static_cast<Eigen::Index>(a % 3);
     const double v = accel ? raw.specific_force_b_m_s2(i) : raw.angular_rate_b_rad_s(i);
     const double range = accel ? cfg_.accel_range_m_s2 : cfg_.gyro_range_rad_s;
-    const double flat = accel ? cfg_.flat_top_accel_m_s2 : cfg_.flat_top_rate_rad_s;
-    repeats_[a] = (have_last_ && v == last_value_[a] && std::abs(v) > flat) ? repeats_[a] + 1 : 0;
+    const double flat_above = accel ? cfg_.flat_top_accel_m_s2 : cfg_.flat_top_rate_rad_s;
+    repeats_[a] = (have_last_ && v == last_value_[a] && std::abs(v) > flat_above) ? repeats_[a] + 1 : 0;
     last_value_[a] = v;
     const bool at_range = range > 0.0 && std::abs(v) >= cfg_.clip_fraction * range;
-    if (at_range || repeats_[a] + 1 >= cfg_.flat_top_repeats) clipped_axes |= static_cast<std::uint8_t>(1u << a);
+    const bool flat = repeats_[a] + 1 >= cfg_.flat_top_repeats;
+    if (flat) rail_[a] = std::abs(v);
+    const bool at_rail = rail_[a] > 0.0 && std::abs(v) == rail_[a];
+    if (at_range || flat || at_rail) clipped_axes |= static_cast<std::uint8_t>(1u << a);
   }
   have_last_ = true;
   last_t_s_ = raw.t_s;

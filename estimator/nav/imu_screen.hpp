@@ -7,7 +7,9 @@
 // the configured full scale (the driver knows it; a dataset user gives it),
 // or, with the full scale unknown, when it sits flat above `flat_top_*`
 // for `flat_top_repeats` samples in a row: a clipped converter repeats its
-// extreme code exactly, a live signal at several g never does.
+// extreme code exactly, a live signal at several g never does. The value
+// found flat is remembered as that axis's rail (either sign): from then on
+// every sample at the rail is clipped, also single ones in a vibration burst.
 #include <array>
 #include <cstdint>
 
@@ -39,6 +41,7 @@ class ImuScreen {
   double last_t_s_ = 0.0;
   std::array<double, 6> last_value_{};
   std::array<int, 6> repeats_{};
+  std::array<double, 6> rail_{};  // |value| a flat top was seen at; 0: none yet
 };
 
 }  // namespace sinu::est

@@ -101,7 +101,11 @@ bool parse_double(std::string_view f, double& out) {
   return end == buf + f.size();
 }
 
-CsvReader::CsvReader(const CsvSchema& schema) : schema_(schema) {}
+CsvReader::CsvReader(const CsvSchema& schema, CsvLeniency leniency) : schema_(schema), leniency_(leniency) {}
+
+void CsvReader::note_anomaly(std::size_t line, std::size_t column, const std::string& message) {
+  if (first_anomaly_.message.empty()) first_anomaly_ = Diagnostic{path_, line, column, message};
+}
 
 ReadStatus CsvReader::fail(std::size_t line, std::size_t column, std::string message) {
   error_ = Diagnostic{path_, line, column, std::move(message)};
@@ -144,6 +148,7 @@ ReadStatus CsvReader::next(CsvRow& row) {
   const std::size_t n = schema_.columns.size();
   const std::size_t line_no = lines_.line_number();
   row.clear(n);
+  bool non_finite = false;
   std::size_t pos = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t comma = line.find(',', pos);
@@ -162,18 +167,27 @@ ReadStatus CsvReader::next(CsvRow& row) {
       double v = 0.0;
       if (!parse_double(field, v))
         return fail(line_no, pos + 1, "field '" + std::string(name) + "': not a number " + quoted(field));
-      if (!std::isfinite(v))
-        return fail(line_no, pos + 1, "field '" + std::string(name) + "': not finite " + quoted(field));
+      if (!std::isfinite(v)) {
+        const std::string why = "field '" + std::string(name) + "': not finite " + quoted(field);
+        if (!leniency_.keep_non_finite || i == 0) return fail(line_no, pos + 1, why);
+        if (!non_finite) note_anomaly(line_no, pos + 1, why);
+        non_finite = true;
+      }
       row.set(i, v);
     } else if (i == 0) {
       return fail(line_no, 1, "field 't': empty, every row needs a time");
     }
     pos = comma + 1;
   }
+  non_finite_rows_ += non_finite;
   if (rows_ > 0 && !(row.t() > last_t_)) {
     char msg[128];
     std::snprintf(msg, sizeof msg, "field 't': time not increasing (%.9g after %.9g)", row.t(), last_t_);
-    return fail(line_no, 1, msg);
+    if (!leniency_.keep_non_increasing_time) return fail(line_no, 1, msg);
+    ++time_anomalies_;
+    note_anomaly(line_no, 1, msg);
+    ++rows_;
+    return ReadStatus::Row;  // last_t_ stays: the next good row is judged against the latest good time
   }
   last_t_ = row.t();
   ++rows_;

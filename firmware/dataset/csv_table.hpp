@@ -44,24 +44,42 @@ enum class ReadStatus { Row, End, Error };
 /// Fast path std::from_chars; strtod only for forms it does not take ("+1", hex).
 bool parse_double(std::string_view field, double& out);
 
+/// What a reader does with rows that break the contract in ways a live
+/// stream can (a time that repeats or steps back, a NaN from a driver):
+/// stop with an error (the default: `inspect` and `calibrate` validate), or
+/// return them and count them (`replay`: the navigator drops and flags them).
+struct CsvLeniency {
+  bool keep_non_increasing_time = false;
+  bool keep_non_finite = false;
+};
+
 class CsvReader {
  public:
-  explicit CsvReader(const CsvSchema& schema);
+  explicit CsvReader(const CsvSchema& schema, CsvLeniency leniency = {});
   /// Opens the file and checks the header. On false, error() says why.
   bool open(const std::string& path);
   /// Next row; on ReadStatus::Error see error(). Never allocates on success.
   ReadStatus next(CsvRow& row);
   const Diagnostic& error() const { return error_; }
   std::size_t rows() const { return rows_; }
+  /// Rows kept despite a time not after the previous one, or a non-finite value.
+  std::size_t time_anomalies() const { return time_anomalies_; }
+  std::size_t non_finite_rows() const { return non_finite_rows_; }
+  /// The first such row, file:line:column and why (empty message if none).
+  const Diagnostic& first_anomaly() const { return first_anomaly_; }
   std::size_t line_number() const { return lines_.line_number(); }
 
  private:
   ReadStatus fail(std::size_t line, std::size_t column, std::string message);
 
+  void note_anomaly(std::size_t line, std::size_t column, const std::string& message);
+
   CsvSchema schema_;
+  CsvLeniency leniency_;
   LineReader lines_;
   std::string path_;
-  Diagnostic error_;
+  Diagnostic error_, first_anomaly_;
+  std::size_t time_anomalies_ = 0, non_finite_rows_ = 0;
   double last_t_ = 0.0;
   std::size_t rows_ = 0;
 };

@@ -60,7 +60,13 @@ bool DatasetSource::run(ReplayFeed& feed, std::string& error) {
 }
 
 SourceCounters DatasetSource::counters() const {
-  return {incomplete_rows_, has_gps_ ? gps_.corrupt() : 0};
+  SourceCounters c;
+  c.incomplete_rows = incomplete_rows_;
+  c.corrupt_sentences = has_gps_ ? gps_.corrupt() : 0;
+  c.time_anomalies = imu_.time_anomalies();
+  c.non_finite_rows = imu_.non_finite_rows();
+  if (!imu_.first_anomaly().message.empty()) c.first_anomaly = imu_.first_anomaly().to_string();
+  return c;
 }
 
 std::string DatasetSource::default_truth() const { return paths_.has_truth() ? paths_.truth() : std::string(); }

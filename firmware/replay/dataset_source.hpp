@@ -19,7 +19,8 @@ class DatasetSource final : public ReplaySource {
 
  private:
   io::DatasetPaths paths_;
-  io::CsvReader imu_{io::kImuSchema};
+  // A live stream's glitches survive a replay: the navigator drops, counts and flags them.
+  io::CsvReader imu_{io::kImuSchema, io::CsvLeniency{true, true}};
   io::GpsLogReader gps_;
   bool has_gps_ = false;
   std::uint64_t incomplete_rows_ = 0;

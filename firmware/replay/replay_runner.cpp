@@ -335,6 +335,11 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
     return false;
   }
   const SourceCounters src = source->counters();
+  if (!src.first_anomaly.empty()) {  // survived, but the user must know
+    totals.note += (totals.note.empty() ? "" : "; ") + std::to_string(src.time_anomalies) +
+                   " imu.csv row(s) with a time not increasing and " + std::to_string(src.non_finite_rows) +
+                   " with a non-finite value were dropped; the first: " + src.first_anomaly;
+  }
   const double t_first = feed.t_first, t_last = feed.t_last;
   const std::uint64_t epochs = feed.epochs, used = feed.used, dropped_outage = feed.dropped_outage,
                       dropped_period = feed.dropped_period;
@@ -402,7 +407,9 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
   sj["gnss"] = {{"epochs", epochs}, {"used", used}, {"dropped_outage", dropped_outage}, {"dropped_period", dropped_period},
                 {"late", c.gnss_late}, {"overflow", c.gnss_overflow}};
   sj["corrupt_sentences"] = src.corrupt_sentences;
-  sj["imu"] = {{"incomplete_rows", src.incomplete_rows}, {"non_increasing", c.imu_non_increasing}, {"gaps", c.imu_gaps},
+  sj["imu"] = {{"incomplete_rows", src.incomplete_rows}, {"time_anomalies", src.time_anomalies},
+               {"non_finite_rows", src.non_finite_rows},
+               {"first_anomaly", src.first_anomaly.empty() ? json(nullptr) : json(src.first_anomaly)}, {"non_increasing", c.imu_non_increasing}, {"gaps", c.imu_gaps},
                {"gap_total_s", c.imu_gap_total_s}, {"longest_gap_s", c.imu_longest_gap_s},
                {"invalid", c.imu_invalid}, {"clipped_samples", c.imu_clipped_samples}};
   // Health: whether this solution can be trusted, before any figure of merit.

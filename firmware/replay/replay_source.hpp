@@ -26,6 +26,9 @@ class ReplayFeed {
 struct SourceCounters {
   std::uint64_t incomplete_rows = 0;    // imu.csv rows without accel or gyro (left out)
   std::uint64_t corrupt_sentences = 0;  // NMEA sentences failing checksum/fields, plus skipped gps.nmea lines
+  std::uint64_t time_anomalies = 0;     // imu.csv rows whose time did not increase (passed on, dropped there)
+  std::uint64_t non_finite_rows = 0;    // imu.csv rows with a NaN/inf value (passed on, dropped there)
+  std::string first_anomaly;            // file:line:column of the first of either ("" if none)
 };
 
 class ReplaySource {

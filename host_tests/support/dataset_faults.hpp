@@ -109,8 +109,25 @@ struct DropLeadingSeconds {
   double seconds = 0.0;
 };
 
-using Fault =
-    std::variant<GnssPositionJump, GnssGarbage, GnssOutage, ImuClip, ImuGap, ImuDropMagFirstRows, DropLeadingSeconds>;
+/// A live stream's clock glitch: the first imu.csv row at or after `at_s`
+/// gets the time of the row before it (Repeat), or that time minus
+/// `step_back_s` (Backwards). Breaks the contract's "strictly increasing" on
+/// purpose: what a board's HAL time stamps can do.
+enum class TimeGlitchKind { Repeat, Backwards };
+struct ImuTimeGlitch {
+  double at_s = 0.0;
+  TimeGlitchKind kind = TimeGlitchKind::Repeat;
+  double step_back_s = 0.5;
+};
+
+/// imu.csv rows in the window: ax and gx written as "nan" (strtod reads it:
+/// what a driver that divides by a zero scale would deliver).
+struct ImuNonFinite {
+  double start_s = 0.0, duration_s = 0.0;
+};
+
+using Fault = std::variant<GnssPositionJump, GnssGarbage, GnssOutage, ImuClip, ImuGap, ImuDropMagFirstRows,
+                           DropLeadingSeconds, ImuTimeGlitch, ImuNonFinite>;
 
 /// What one fault did: lines (rows) it rewrote and lines it removed, over all files.
 struct FaultEffect {

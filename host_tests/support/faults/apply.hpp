@@ -23,6 +23,8 @@ FaultEffect apply(const ImuClip& f, DatasetText& d);
 FaultEffect apply(const ImuGap& f, DatasetText& d);
 FaultEffect apply(const ImuDropMagFirstRows& f, DatasetText& d);
 FaultEffect apply(const DropLeadingSeconds& f, DatasetText& d);
+FaultEffect apply(const ImuTimeGlitch& f, DatasetText& d);
+FaultEffect apply(const ImuNonFinite& f, DatasetText& d);
 
 /// Removes the lines whose time (leading number) satisfies `drop`; lines
 /// without a readable time stay. A file that did not end in a terminator

@@ -3,6 +3,8 @@
 #include "host_tests/support/faults/apply.hpp"
 #include "host_tests/support/faults/imu_clip.hpp"
 
+#include <cstdio>
+
 namespace sinu::test::faults {
 
 namespace {
@@ -40,6 +42,37 @@ FaultEffect apply(const ImuDropMagFirstRows& f, DatasetText& d) {
       fields[c].clear();
     }
     if (!changed) continue;
+    d.imu[i].text = join_fields(fields);
+    ++e.changed;
+  }
+  return e;
+}
+
+FaultEffect apply(const ImuTimeGlitch& f, DatasetText& d) {
+  for (std::size_t i = 2; i < d.imu.size(); ++i) {
+    const auto t = leading_number(d.imu[i].text);
+    const auto t_before = leading_number(d.imu[i - 1].text);
+    if (!t || !t_before || *t < f.at_s) continue;
+    auto fields = split_fields(d.imu[i].text);
+    const double glitch = f.kind == TimeGlitchKind::Repeat ? *t_before : *t_before - f.step_back_s;
+    char text[64];
+    std::snprintf(text, sizeof text, "%.6f", glitch);
+    fields[0] = text;
+    d.imu[i].text = join_fields(fields);
+    return {1, 0};
+  }
+  return {};
+}
+
+FaultEffect apply(const ImuNonFinite& f, DatasetText& d) {
+  FaultEffect e;
+  for (std::size_t i = 1; i < d.imu.size(); ++i) {
+    const auto t = leading_number(d.imu[i].text);
+    if (!t || !in_window(*t, f.start_s, f.duration_s)) continue;
+    auto fields = split_fields(d.imu[i].text);
+    if (fields.size() < 5) continue;
+    fields[1] = "nan";  // ax
+    fields[4] = "nan";  // gx
     d.imu[i].text = join_fields(fields);
     ++e.changed;
   }
