@@ -23,11 +23,13 @@ void RestLevelling::restart() {
 bool RestLevelling::moving(const ImuSample& s, double dt) {
   const Eigen::Vector3d& f = s.specific_force_b_m_s2;
   const Eigen::Vector3d& w = s.angular_rate_b_rad_s;
-  if (w.cwiseAbs().maxCoeff() > cfg_.max_rate_rad_s) return true;
   const double a = have_ema_ ? std::min(1.0, dt / cfg_.motion_tau_s) : 1.0;
   ema_f_ += a * (f - ema_f_);
   ema_w_ += a * (w - ema_w_);
   have_ema_ = true;
+  // Turning: the short-term mean rate, not single samples (a consumer gyro's
+  // noise at 100 Hz alone reaches 0.08 rad/s).
+  if (ema_w_.cwiseAbs().maxCoeff() > cfg_.max_rate_rad_s) return true;
   if (now_.count < 2 || now_.window_s < cfg_.motion_tau_s) return false;
   const double n = static_cast<double>(now_.count);
   const Eigen::Vector3d mean_f = now_.f / n, mean_w = now_.w / n;

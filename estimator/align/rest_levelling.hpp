@@ -7,8 +7,8 @@
 // motion ends it, and the estimate of the whole rest period is kept. The
 // longer the rest, the less the gyro-carried attitude drifts afterwards.
 //
-// Motion is a rate above max_rate_rad_s, or a short-term mean (exponential,
-// `motion_tau_s`) of the specific force or rate leaving the window's mean by
+// Motion is a short-term mean (exponential, `motion_tau_s`) of the rate above
+// max_rate_rad_s, or of the specific force or rate leaving the window's mean by
 // more than its noise allows: vibration averages out, the onset of a gentle
 // acceleration does not. The samples just before the onset are already
 // touched by it, so the estimate kept is the window as it was at least

@@ -97,7 +97,9 @@ void ErrorStateFilter::build_transition(const PredictInput& in, int ar_steps, St
     Phi.middleRows(M, 3) += skew(mag_field_n_) * dphi;
   }
 
-  const double na = noise_.accel_white_m_s2_rthz, ng = noise_.gyro_white_rad_s_rthz;
+  // White noise: the model's, or what the data show when that is more (vibration).
+  const double na = std::max(noise_.accel_white_m_s2_rthz, in.accel_white_floor_m_s2_rthz);
+  const double ng = std::max(noise_.gyro_white_rad_s_rthz, in.gyro_white_floor_rad_s_rthz);
   q.segment(V, 3).setConstant(na * na * dt);
   q.segment(A, 3).setConstant(ng * ng * dt);
 

@@ -28,6 +28,10 @@ struct PredictInput {
   Eigen::Vector3d specific_force_n_m_s2;      // mean over the interval
   double temp_delta_degC = 0.0;               // temperature minus reference
   double dt_s = 0.0;
+  // White-noise densities the samples themselves show (vibration): the
+  // model's densities are raised to these when lower (navigator.hpp).
+  double accel_white_floor_m_s2_rthz = 0.0;
+  double gyro_white_floor_rad_s_rthz = 0.0;
 };
 
 class ErrorStateFilter {

@@ -7,6 +7,8 @@
 // measurement, so P is always predicted to the time of the update.
 // Over 0.1 s the first-order transition I + F dt is as good as 4 steps of
 // 0.025 s to O(|F dt|^2) = O(1e-2) of the already small coupling terms.
+#include <cmath>
+
 #include "estimator/ekf/error_state_filter.hpp"
 
 namespace sinu::est {
@@ -19,6 +21,8 @@ class PredictAccumulator {
     w_b_ += w * in.angular_rate_b_rad_s;
     f_n_ += w * in.specific_force_n_m_s2;
     temp_ += w * in.temp_delta_degC;
+    accel_floor2_ += w * in.accel_white_floor_m_s2_rthz * in.accel_white_floor_m_s2_rthz;
+    gyro_floor2_ += w * in.gyro_white_floor_rad_s_rthz * in.gyro_white_floor_rad_s_rthz;
     dt_ += w;
     nav_ = in.nav;
   }
@@ -32,6 +36,8 @@ class PredictAccumulator {
     in.angular_rate_b_rad_s = w_b_ / dt_;
     in.specific_force_n_m_s2 = f_n_ / dt_;
     in.temp_delta_degC = temp_ / dt_;
+    in.accel_white_floor_m_s2_rthz = std::sqrt(accel_floor2_ / dt_);
+    in.gyro_white_floor_rad_s_rthz = std::sqrt(gyro_floor2_ / dt_);
     in.dt_s = dt_;
     filter.predict(in);
     clear();
@@ -40,12 +46,12 @@ class PredictAccumulator {
     f_b_.setZero();
     w_b_.setZero();
     f_n_.setZero();
-    temp_ = dt_ = 0.0;
+    temp_ = dt_ = accel_floor2_ = gyro_floor2_ = 0.0;
   }
 
  private:
   Eigen::Vector3d f_b_ = Eigen::Vector3d::Zero(), w_b_ = Eigen::Vector3d::Zero(), f_n_ = Eigen::Vector3d::Zero();
-  double temp_ = 0.0, dt_ = 0.0;
+  double temp_ = 0.0, dt_ = 0.0, accel_floor2_ = 0.0, gyro_floor2_ = 0.0;
   const NavState* nav_ = nullptr;
 };
 

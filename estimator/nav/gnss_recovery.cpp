@@ -1,5 +1,7 @@
 #include "estimator/nav/gnss_recovery.hpp"
 
+#include <algorithm>
+
 namespace sinu::est {
 
 void GnssRecovery::restart(double t_s) {
@@ -8,19 +10,21 @@ void GnssRecovery::restart(double t_s) {
   moving_while_vel_rejected_ = false;
 }
 
-RecoveryAction GnssRecovery::on_position(double t_s, bool accepted) {
+RecoveryAction GnssRecovery::on_position(double t_s, bool accepted, double innovation_h_m, double fix_sigma_h_m) {
   if (accepted) {
     last_pos_accept_s_ = t_s;
     pos_rejecting_ = false;
     return RecoveryAction::None;
   }
+  last_pos_reject_s_ = t_s;
+  jump_ = innovation_h_m > std::max(cfg_.jump_min_m, cfg_.jump_sigmas * fix_sigma_h_m);
   if (!pos_rejecting_) {
     pos_rejecting_ = true;
     pos_reject_since_s_ = t_s;
   }
   const double rejected_for = t_s - pos_reject_since_s_;
   if (rejected_for < cfg_.reset_after_s) return RecoveryAction::None;
-  if (velocity_agrees(t_s) && rejected_for < cfg_.jump_hold_s) return RecoveryAction::None;  // the GNSS jumped
+  if (jump_ && velocity_agrees(t_s) && rejected_for < cfg_.jump_hold_s) return RecoveryAction::None;  // the GNSS jumped
   pos_rejecting_ = false;
   last_pos_accept_s_ = t_s;
   return RecoveryAction::ResetPosition;
@@ -46,9 +50,12 @@ RecoveryAction GnssRecovery::on_velocity(double t_s, bool accepted, double speed
 }
 
 bool GnssRecovery::lost(double t_s) const {
-  return pos_rejecting_ && t_s - pos_reject_since_s_ >= cfg_.lost_after_s && !velocity_agrees(t_s);
+  const bool fixes_arriving = t_s - last_pos_reject_s_ <= 1.0;
+  return pos_rejecting_ && fixes_arriving && t_s - pos_reject_since_s_ >= cfg_.lost_after_s && !velocity_agrees(t_s);
 }
 
-bool GnssRecovery::gnss_suspect(double t_s) const { return pos_rejecting_ && velocity_agrees(t_s); }
+bool GnssRecovery::gnss_suspect(double t_s) const {
+  return pos_rejecting_ && jump_ && velocity_agrees(t_s) && t_s - last_pos_reject_s_ <= 1.0;
+}
 
 }  // namespace sinu::est

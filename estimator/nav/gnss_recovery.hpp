@@ -2,10 +2,13 @@
 // When to give up on the filter and reset it to GNSS (PX4 EKF2 resets to
 // GNSS after its innovations have failed for a few seconds). The test
 // ratios decide who is wrong:
-//   - position rejected while the GNSS velocity is accepted: the INS moves as
+//   - position rejected by a jump (more than jump_min_m and jump_sigmas of the
+//     fix's own sigma) while the GNSS velocity is accepted: the INS moves as
 //     the receiver says, so the receiver's position has jumped (multipath, a
 //     spoofing step): hold the solution and flag the GNSS as suspect; only
-//     after `jump_hold_s` does a persistent offset win (a datum change);
+//     after `jump_hold_s` does a persistent offset win (a datum change). A
+//     smaller misfit is the filter claiming more than it knows (an RTK fix
+//     against an INS with unmodelled centimetres): reset as below;
 //   - position rejected and velocity rejected (or absent): the filter is
 //     wrong (clipping, a gap, a bad start): reset position and velocity after
 //     `reset_after_s`, and the yaw too if the velocity has been rejected while
@@ -13,7 +16,8 @@
 //   - velocity alone rejected for `reset_after_s`: reset it (and the yaw when
 //     moving).
 // A solution whose position and velocity have both been rejected for
-// `lost_after_s` is lost until the next accepted position.
+// `lost_after_s`, while fixes keep arriving, is lost until the next accepted
+// position (no fixes at all is an outage, not a loss).
 #include <cstdint>
 
 namespace sinu::est {
@@ -23,6 +27,8 @@ struct RecoveryConfig {
   double jump_hold_s = 30.0;
   double lost_after_s = 10.0;
   double velocity_agrees_within_s = 1.0;  // a velocity accepted this recently vouches for the INS
+  double jump_min_m = 1.0;
+  double jump_sigmas = 10.0;
   double yaw_reset_min_speed_m_s = 5.0;   // below it the velocity says nothing of the heading
 };
 
@@ -36,8 +42,9 @@ class GnssRecovery {
   }
   /// The filter was (re)started or reset at t: every timer starts afresh.
   void restart(double t_s);
-  /// Outcome of the position update of an epoch valid at t.
-  RecoveryAction on_position(double t_s, bool accepted);
+  /// Outcome of the position update of an epoch valid at t: its horizontal
+  /// innovation [m] and the fix's own horizontal sigma [m].
+  RecoveryAction on_position(double t_s, bool accepted, double innovation_h_m, double fix_sigma_h_m);
   /// Outcome of the velocity update of an epoch valid at t; speed over ground.
   RecoveryAction on_velocity(double t_s, bool accepted, double speed_m_s);
   bool lost(double t_s) const;
@@ -48,7 +55,8 @@ class GnssRecovery {
 
   RecoveryConfig cfg_;
   double last_pos_accept_s_ = 0.0, last_vel_accept_s_ = -1e300;
-  double pos_reject_since_s_ = 0.0, vel_reject_since_s_ = 0.0;
+  double pos_reject_since_s_ = 0.0, vel_reject_since_s_ = 0.0, last_pos_reject_s_ = -1e300;
+  bool jump_ = false;
   bool pos_rejecting_ = false, vel_rejecting_ = false;
   bool moving_while_vel_rejected_ = false;
 };

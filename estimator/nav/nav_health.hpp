@@ -8,10 +8,10 @@
 
 namespace sinu::est {
 
-enum class AidingSource : std::uint8_t { GnssPosition, GnssVelocity, Magnetometer };
-inline constexpr std::size_t kAidingSourceCount = 3;
-inline constexpr std::array<const char*, kAidingSourceCount> kAidingSourceNames = {"gnss_position", "gnss_velocity",
-                                                                                   "magnetometer"};
+enum class AidingSource : std::uint8_t { GnssPosition, GnssVelocity, Magnetometer, ZeroVelocity, Nonholonomic };
+inline constexpr std::size_t kAidingSourceCount = 5;
+inline constexpr std::array<const char*, kAidingSourceCount> kAidingSourceNames = {
+    "gnss_position", "gnss_velocity", "magnetometer", "zero_velocity", "nonholonomic"};
 
 namespace nav_flag {
 enum : std::uint32_t {
@@ -35,14 +35,17 @@ enum : std::uint32_t {
   kImuGap = 1u << 17,         // the interval to this sample was longer than a few sample periods
   kImuDropped = 1u << 18,     // a raw sample was dropped: non-finite value, or time not increasing
   kAlignedNow = 1u << 19,     // the alignment completed at this output
+  kStill = 1u << 20,          // state: standing still (IMU quiet, GNSS speed ~0): zero-velocity updates
+  kNonholonomicFused = 1u << 21,
 };
 }  // namespace nav_flag
 
 /// The flags' names, bit by bit (nav.csv documents its `flags` column with them).
-inline constexpr std::array<const char*, 20> kNavFlagNames = {
+inline constexpr std::array<const char*, 22> kNavFlagNames = {
     "aligned", "gnss_timeout", "mag_timeout", "lost", "gnss_suspect", "clipping", "", "",
     "gnss_pos_fused", "gnss_pos_rejected", "gnss_vel_fused", "gnss_vel_rejected", "mag_fused", "mag_rejected",
-    "position_reset", "velocity_reset", "yaw_reset", "imu_gap", "imu_dropped", "aligned_now"};
+    "position_reset", "velocity_reset", "yaw_reset", "imu_gap", "imu_dropped", "aligned_now", "still",
+    "nonholonomic_fused"};
 
 struct NavCounters {
   std::array<std::uint64_t, kAidingSourceCount> accepted{}, rejected{};

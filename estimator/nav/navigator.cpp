@@ -10,6 +10,7 @@
 #include "estimator/ekf/aiding/gnss_position/gnss_position.hpp"
 #include "estimator/ekf/aiding/gnss_velocity/gnss_velocity.hpp"
 #include "estimator/ekf/aiding/magnetometer/magnetometer.hpp"
+#include "estimator/ekf/aiding/zero_velocity/zero_velocity.hpp"
 
 namespace sinu::est {
 
@@ -45,9 +46,13 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   alignment_.configure(cfg.alignment);
   recovery_.configure(cfg.recovery);
   vel_noise_started_ = false;
+  stillness_.configure(cfg.stillness);
+  still_now_ = false;
+  last_gnss_speed_m_s_ = 1e9;
+  last_zupt_t_s_ = last_nhc_t_s_ = 0.0;
   mag_noise_.configure(cfg.mag_noise, cfg.mag_sigma_uT);
   have_prev_ = have_raw_ = mag_started_ = in_timeout_ = false;
-  raw_period_s_ = period_s_ = horizontal_accel_m_s2_ = 0.0;
+  raw_period_s_ = period_s_ = horizontal_accel_m_s2_ = accel_diff_var_ = gyro_diff_var_ = 0.0;
   clip_until_t_s_.fill(kNever);
   last_clip_t_s_.fill(kNever);
   clip_run_.fill(0);
@@ -164,6 +169,14 @@ void Navigator::process(const ImuSample& s) {
   in.specific_force_n_m_s2 = f_n;
   in.temp_delta_degC = s.has_temp ? s.temp_degC - filter_.reference_temperature() : 0.0;
   in.dt_s = dt;
+  if (cfg_.vibration_noise && dt < cfg_.gap_periods * period_s_) {
+    const double a = std::min(1.0, dt / cfg_.vibration_tau_s);
+    accel_diff_var_ += a * ((s.specific_force_b_m_s2 - prev_.specific_force_b_m_s2).squaredNorm() / 3.0 - accel_diff_var_);
+    gyro_diff_var_ += a * ((s.angular_rate_b_rad_s - prev_.angular_rate_b_rad_s).squaredNorm() / 3.0 - gyro_diff_var_);
+    // per-sample variance var(diff)/2, as a density: sigma^2 * sample period
+    in.accel_white_floor_m_s2_rthz = std::sqrt(0.5 * accel_diff_var_ * period_s_);
+    in.gyro_white_floor_rad_s_rthz = std::sqrt(0.5 * gyro_diff_var_ * period_s_);
+  }
   predict_.add(in);
   if (predict_.pending_s() >= cfg_.covariance_period_s - 1e-9) predict_.flush(filter_);
   widen_for_faults(s, dt);
@@ -177,6 +190,11 @@ void Navigator::process(const ImuSample& s) {
 
   fuse_due_gnss(s.t_s, dt, r1);
   fuse_magnetometer(s);
+  ImuSample compensated = s;
+  compensated.specific_force_b_m_s2 = r1.specific_force_b_m_s2;
+  compensated.angular_rate_b_rad_s = r1.angular_rate_b_rad_s;
+  stillness_.add(compensated, dt);
+  fuse_vehicle_constraints(s, r1);
   update_health(s.t_s, dt);
   prev_ = s;
   emit();
@@ -260,8 +278,10 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
       last_gnss_pos_t_s_ = t_meas;
       const bool ok = fuse(AidingSource::GnssPosition,
                            gnss_position_measurement(filter_, nav_, dt_back, z, cfg_.gate_sigma), t_meas);
-      recover(recovery_.on_position(t_meas, ok), z, dt_back, t_meas);
+      const double innovation_h = last_result_.innovation.head<2>().norm();
+      recover(recovery_.on_position(t_meas, ok, innovation_h, z.sigma_ned_m.head<2>().norm()), z, dt_back, t_meas);
     }
+    if (z.has_velocity) last_gnss_speed_m_s_ = z.speed_m_s;
     if (z.has_velocity && cfg_.fuse_velocity) {
       if (!vel_noise_started_) {  // the first epoch's sigma is the starting value
         vel_noise_.configure(cfg_.gnss_velocity_noise, z.sigma_vel_m_s);
@@ -341,6 +361,25 @@ void Navigator::fuse_magnetometer(const ImuSample& s) {
   mag_noise_.learn(last_result_, since);
 }
 
+void Navigator::fuse_vehicle_constraints(const ImuSample& s, const BodyRates& now) {
+  // Still: the IMU says so, and so does the receiver's speed when it is recent.
+  const bool gnss_recent = s.t_s - last_gnss_pos_t_s_ < cfg_.gnss_timeout_s;
+  const bool still = stillness_.still() && (!gnss_recent || last_gnss_speed_m_s_ < cfg_.still_max_gnss_speed_m_s);
+  still_now_ = still;
+  const bool zupt = cfg_.vehicle == VehicleKind::Ground || cfg_.zero_velocity_in_air;
+  if (zupt && still && s.t_s - last_zupt_t_s_ >= cfg_.zero_velocity_period_s - 1e-6) {
+    last_zupt_t_s_ = s.t_s;
+    fuse(AidingSource::ZeroVelocity,
+         zero_velocity_measurement(filter_, nav_, cfg_.zero_velocity_sigma_m_s, cfg_.gate_sigma), s.t_s);
+  }
+  if (cfg_.vehicle != VehicleKind::Ground || still) return;
+  if (nav_.v_n_m_s.head<2>().norm() < cfg_.nonholonomic_min_speed_m_s) return;
+  if (s.t_s - last_nhc_t_s_ < cfg_.nonholonomic_period_s - 1e-6) return;
+  last_nhc_t_s_ = s.t_s;
+  fuse(AidingSource::Nonholonomic,
+       nonholonomic_measurement(filter_, nav_, now.angular_rate_b_rad_s, cfg_.nonholonomic, cfg_.gate_sigma), s.t_s);
+}
+
 bool Navigator::fuse(AidingSource src, const Measurement& m, double t_meas) {
   predict_.flush(filter_);  // P to the time of this update
   InnovationRecord rec;
@@ -350,9 +389,10 @@ bool Navigator::fuse(AidingSource src, const Measurement& m, double t_meas) {
   last_result_ = rec.result;
   const auto i = static_cast<std::size_t>(src);
   test_ratio_[i] = rec.result.test_ratio.head(rec.result.rows).maxCoeff();
-  static constexpr std::uint32_t kFused[] = {nav_flag::kGnssPosFused, nav_flag::kGnssVelFused, nav_flag::kMagFused};
+  static constexpr std::uint32_t kFused[] = {nav_flag::kGnssPosFused, nav_flag::kGnssVelFused, nav_flag::kMagFused, 0,
+                                             nav_flag::kNonholonomicFused};
   static constexpr std::uint32_t kRejected[] = {nav_flag::kGnssPosRejected, nav_flag::kGnssVelRejected,
-                                                nav_flag::kMagRejected};
+                                                nav_flag::kMagRejected, 0, 0};
   if (rec.result.accepted) {
     ++counters_.accepted[i];
     events_ |= kFused[i];
@@ -388,6 +428,7 @@ void Navigator::update_health(double t_now, double dt) {
     counters_.lost_total_s += dt;
   }
   if (recovery_.gnss_suspect(t_now)) f |= nav_flag::kGnssSuspect;
+  if (still_now_) f |= nav_flag::kStill;
   state_flags_ = f;
 }
 

@@ -20,6 +20,7 @@
 
 #include "estimator/align/coarse_alignment.hpp"
 #include "estimator/ekf/aiding/gnss_observation.hpp"
+#include "estimator/ekf/aiding/nonholonomic/nonholonomic.hpp"
 #include "estimator/ekf/error_state_filter.hpp"
 #include "estimator/ekf/measurement_update.hpp"
 #include "estimator/ekf/predict_accumulator.hpp"
@@ -27,6 +28,7 @@
 #include "estimator/nav/imu_screen.hpp"
 #include "estimator/nav/nav_health.hpp"
 #include "estimator/nav/noise_adapter.hpp"
+#include "estimator/nav/stillness.hpp"
 #include "estimator/prefilter/imu_prefilter.hpp"
 #include "estimator/util/ring_buffer.hpp"
 
@@ -34,6 +36,10 @@ namespace sinu::est {
 
 inline constexpr std::size_t kImuBufferCapacity = 512;   // 0.5 s at 1000 Hz
 inline constexpr std::size_t kGnssBufferCapacity = 32;   // 6 s of 5 Hz epochs
+
+/// What the unit is mounted in: a ground vehicle adds the non-holonomic
+/// constraint (no sideways, no vertical velocity in the body frame).
+enum class VehicleKind : std::uint8_t { Air, Ground };
 
 struct NavigatorConfig {
   SensorNoise noise = SensorNoise::defaults(NoiseModelKind::GaussMarkov);
@@ -48,6 +54,20 @@ struct NavigatorConfig {
   double gps_latency_s = 0.0;        // configured latency (initial value when estimated)
   Eigen::Vector3d lever_arm_b_m = Eigen::Vector3d::Zero();  // antenna minus IMU, body FRD
   bool fuse_velocity = true;
+  VehicleKind vehicle = VehicleKind::Air;
+  NonholonomicConfig nonholonomic;
+  double nonholonomic_period_s = 0.1;
+  double nonholonomic_min_speed_m_s = 1.0;
+  // Zero-velocity updates while standing still (stillness.hpp, and the GNSS
+  // speed below still_max_gnss_speed_m_s when there is one): for a ground
+  // vehicle, which stops often and for long; an aircraft's few seconds on
+  // the ground add little (measured on simulated flights: the heading at
+  // take-off is no better, the tilt slightly overconfident).
+  bool zero_velocity_in_air = false;
+  StillnessConfig stillness;
+  double still_max_gnss_speed_m_s = 0.2;
+  double zero_velocity_sigma_m_s = 0.02;
+  double zero_velocity_period_s = 0.2;
   // Magnetometer: its states (Earth field, hard iron, and soft iron when in
   // `effects`) are reserved and switched on by the first field sample after
   // alignment; sigma covers the sensor noise and small disturbances.
@@ -63,6 +83,12 @@ struct NavigatorConfig {
   // Faults.
   double clip_error_fraction = 0.5;   // 1 sigma of the unknown true value of a clipped axis, x full scale
   double clip_hold_s = 10.0;          // a clipped axis's biases stay frozen this long after it clipped
+  // Vibration: the white noise the processed samples show, from their
+  // sample-to-sample differences (a vehicle's own motion changes little in
+  // one sample; noise and vibration change a lot): var(x_k - x_k-1) / 2 per
+  // sample, averaged over vibration_tau_s, is a density floor for the model.
+  bool vibration_noise = true;
+  double vibration_tau_s = 2.0;
   double gap_periods = 3.5;           // an interval longer than this many sample periods is a gap
   double gap_accel_sigma_m_s2 = 1.0;  // unknown acceleration and rate during a gap, on top of
   double gap_rate_sigma_rad_s = 0.02; // half the change across it
@@ -125,6 +151,7 @@ class Navigator {
   void widen_for_faults(const ImuSample& s, double dt);
   void fuse_due_gnss(double t_now, double dt, const BodyRates& now);
   void fuse_magnetometer(const ImuSample& s);
+  void fuse_vehicle_constraints(const ImuSample& s, const BodyRates& now);
   bool fuse(AidingSource src, const Measurement& m, double t_meas);
   void recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas);
   void update_health(double t_now, double dt);
@@ -156,8 +183,12 @@ class Navigator {
   std::array<int, kSensorAxes> clip_run_{};              // consecutive clipped intervals, per axis
   double period_s_ = 0.0;                                // nominal interval of the processed stream
   double horizontal_accel_m_s2_ = 0.0;                   // smoothed (1 s) horizontal specific force, NED
+  double accel_diff_var_ = 0.0, gyro_diff_var_ = 0.0;    // mean squared sample-to-sample differences
   StateMask frozen_;
   NoiseAdapter vel_noise_, mag_noise_;
+  Stillness stillness_;
+  double last_gnss_speed_m_s_ = 1e9, last_zupt_t_s_ = 0.0, last_nhc_t_s_ = 0.0;
+  bool still_now_ = false;
   bool vel_noise_started_ = false;
   UpdateResult last_result_;
   double last_vel_update_t_s_ = 0.0;

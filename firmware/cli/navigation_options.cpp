@@ -41,6 +41,10 @@ void NavigationCliOptions::add_to(CLI::App& sub) {
   sub.add_option("--mag-declination", opt.mag_declination_deg,
                  "Site's magnetic declination [deg, east +]: align heading with the magnetometer at rest "
                  "(default: from the GNSS course once moving)");
+  sub.add_option("--vehicle", vehicle,
+                 "What carries the unit: air (UAV, default) or ground (a car: no sideways or vertical velocity in "
+                 "the body frame, the non-holonomic constraint)")
+      ->capture_default_str();
   sub.add_flag("--no-mag", [this](std::int64_t) { opt.use_mag = false; },
                "Do not fuse the magnetometer even when imu.csv has one");
   imu.add_to(sub);
@@ -56,6 +60,14 @@ bool NavigationCliOptions::resolve(std::string& error) {
     return false;
   }
   if (!replay::resolve_effects(effects, without_effects, opt.effects, error)) return false;
+  if (vehicle == "air") {
+    opt.vehicle = est::VehicleKind::Air;
+  } else if (vehicle == "ground") {
+    opt.vehicle = est::VehicleKind::Ground;
+  } else {
+    error = "--vehicle must be air or ground, not '" + vehicle + "'";
+    return false;
+  }
   // A dataset's full scales only when given (a recording's come from its driver settings).
   if (app && app->count("--gps-vel-sigma")) opt.adapt_velocity_noise = false;
   if (app && app->count("--mag-sigma")) opt.adapt_mag_noise = false;

@@ -9,7 +9,7 @@ namespace sinu::replay {
 
 struct GnssSigmaConfig {
   double uere_m = 2.5;            // user equivalent range error for sigma = DOP * UERE
-  double min_sigma_m = 0.05;      // floor: below it time-tagging errors dominate
+  double min_sigma_m = 0.2;      // floor: below it time tagging (20 ms at 10 m/s) and lever arms dominate
   double velocity_sigma_m_s = 0.2;
   double no_dop_sigma_m = 5.0;    // neither GST nor HDOP
 };

@@ -46,6 +46,7 @@ struct ReplayOptions {
   bool adapt_velocity_noise = true;
   bool adapt_mag_noise = true;
   bool use_mag = true;
+  est::VehicleKind vehicle = est::VehicleKind::Air;  // ground: non-holonomic constraint
   // IMU full scales for the clipping screen; 0: unknown (a recording's driver
   // settings fill them; for a dataset the user gives --accel-range/--gyro-range).
   double accel_range_m_s2 = 0.0;

@@ -62,7 +62,8 @@ class ReplayObserver final : public est::NavObserver {
   void on_innovation(const est::InnovationRecord& rec) override {
     metrics_.add_innovation(rec);
     static constexpr const char* kComponents[est::kAidingSourceCount][3] = {
-        {"north", "east", "down"}, {"north", "east", ""}, {"x", "y", "z"}};
+        {"north", "east", "down"}, {"north", "east", ""}, {"x", "y", "z"}, {"north", "east", "down"},
+        {"lateral", "vertical", ""}};
     const auto src = static_cast<std::size_t>(rec.source);
     for (Eigen::Index i = 0; i < rec.result.rows; ++i) {
       innov_out_.number(rec.t_s, 6);
@@ -207,8 +208,8 @@ std::string nav_header(const est::StateLayout& layout) {
   std::string h = "t,lat,lon,h,vn,ve,vd,roll,pitch,yaw,sigma_pn_m,sigma_pe_m,sigma_pd_m,sigma_vn,sigma_ve,sigma_vd,"
                   "sigma_att_n_deg,sigma_att_e_deg,sigma_att_d_deg,"
                   "err_ax,err_ay,err_az,err_gx,err_gy,err_gz,sigma_err_ax,sigma_err_ay,sigma_err_az,sigma_err_gx,"
-                  "sigma_err_gy,sigma_err_gz,flags,test_ratio_gnss_position,test_ratio_gnss_velocity,"
-                  "test_ratio_magnetometer";
+                  "sigma_err_gy,sigma_err_gz,flags";
+  for (const char* src : est::kAidingSourceNames) h += std::string(",test_ratio_") + src;
   for (std::size_t e = 0; e < est::kEffectCount; ++e) {
     if (!layout.carries(static_cast<est::Effect>(e))) continue;
     for (Eigen::Index i = 0; i < est::kEffectDims[e]; ++i) {
@@ -281,6 +282,7 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
   }
   cfg.effects = opt.effects;
   cfg.use_mag = opt.use_mag;
+  cfg.vehicle = opt.vehicle;
   cfg.mag_sigma_uT = opt.mag_sigma_uT;
   cfg.gnss_velocity_noise.enabled = opt.adapt_velocity_noise;
   cfg.mag_noise.enabled = opt.adapt_mag_noise;

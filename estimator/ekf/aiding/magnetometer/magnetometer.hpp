@@ -5,9 +5,12 @@
 //   m_b = S C_bn F_n + h_b + noise  [uT]   (below: S = I; with D, H_att and
 //   H_field are premultiplied by S and H_D = -d(S u)/dD, u = C_bn F).
 // y = h(x_hat) - z. With phi (C_nb_hat = (I - [phi x]) C_nb), dF = F - F_hat,
-// dh = h - h_hat:  y = -C_bn_hat [F_hat x] phi - C_bn_hat dF - dh, so
-//   H_att = -C_bn [F x],  H_field = -C_bn,  H_hard_iron = -I.
-// Heading becomes observable on straight legs, where GNSS alone cannot see it.
+// dh = h - h_hat:  y = -C_bn [F x] phi - C_bn dF - dh = -C_bn e - dh with the
+// invariant field error e = dF + [F x] phi (state_layout.hpp), so
+//   H_att = 0,  H_field = -C_bn,  H_hard_iron = -I.
+// The magnetometer alone never tells the absolute attitude (the field is a
+// state); through e's dynamics (e follows phi) it holds the heading on
+// straight legs, once GNSS motion has tied the field to north.
 #include "estimator/ekf/error_state_filter.hpp"
 #include "estimator/ekf/measurement_update.hpp"
 
