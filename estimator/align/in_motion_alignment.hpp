@@ -2,7 +2,7 @@
 // In-motion coarse alignment: the full attitude while moving, from the IMU
 // and GNSS velocity, by optimisation-based alignment (OBA) in its
 // velocity-integration form, solved as Wahba's problem and refined jointly
-// with the gyro bias:
+// with the gyro and accelerometer biases:
 //   b0, n0: body and navigation frames at the window start t0 (fixed in
 //   inertial space); C_nb(t) = C_n_n0(t) C_n0_b0 C_b0_b(t), where C_b0_b
 //   comes from the gyros, C_n_n0 from the Earth and transport rates, and
@@ -10,7 +10,7 @@
 //   beta_k = C_n0_b0 alpha_k + c at the GNSS epochs (oba_body_integrals,
 //   oba_pair_builder, oba_solver; docs/in_motion_alignment.md derives it).
 //
-// Observability: tilt needs only gravity, yaw needs the horizontal velocity
+// Observability: tilt comes from gravity, yaw needs the horizontal velocity
 // to change (speed changes, turns) so that the pairs are not all collinear.
 // The criterion is the yaw 1-sigma of the first-order error model (GNSS
 // velocity and height noise, gyro bias prior, accelerometer bias over the
