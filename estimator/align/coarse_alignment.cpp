@@ -11,6 +11,9 @@ namespace sinu::est {
 void CoarseAlignment::configure(const AlignmentConfig& cfg) {
   cfg_ = cfg;
   rest_.configure(cfg.rest);
+  in_motion_.configure(cfg.in_motion);
+  have_mag_ = false;
+  tilt_since_s_ = -1.0;
   status_ = AlignStatus::WaitingForRest;
   q_now_ = Eigen::Quaterniond::Identity();
   carried_s_ = 0.0;
@@ -18,6 +21,12 @@ void CoarseAlignment::configure(const AlignmentConfig& cfg) {
 
 void CoarseAlignment::add_imu(const ImuSample& s, double dt) {
   if (status_ == AlignStatus::Aligned) return;
+  in_motion_.add_imu(s, dt);
+  if (s.has_mag && s.mag_b_uT.allFinite()) {
+    last_mag_b_uT_ = s.mag_b_uT;
+    have_mag_ = true;
+  }
+  if (s.has_temp) last_temp_degC_ = s.temp_degC;
   rest_.add(s, dt);
   if (!rest_.has_estimate()) return;
   status_ = AlignStatus::Levelled;
@@ -32,7 +41,12 @@ void CoarseAlignment::add_imu(const ImuSample& s, double dt) {
 }
 
 bool CoarseAlignment::add_gnss(const GnssObservation& z, double t_now, AlignmentResult& out) {
-  if (status_ != AlignStatus::Levelled || !z.has_position) return false;
+  if (status_ == AlignStatus::Aligned || !z.has_position) return false;
+  if (status_ == AlignStatus::WaitingForRest || !rest_.at_rest()) {
+    // Moving (or never at rest): the in-motion alignment may finish first.
+    if (align_in_motion(z, t_now, out)) return true;
+    if (status_ == AlignStatus::WaitingForRest) return false;
+  }
   const RestEstimate& r = rest_.estimate();
   // Magnetic heading: the field in the levelled (yaw 0) frame is Rz(-yaw) F_n,
   // whose horizontal angle is declination - yaw.
@@ -50,6 +64,58 @@ bool CoarseAlignment::add_gnss(const GnssObservation& z, double t_now, Alignment
   return true;
 }
 
+double CoarseAlignment::mag_heading(const Eigen::Quaterniond& q_nb, const Eigen::Vector3d& mag_b_uT) const {
+  // The field in the levelled (yaw 0) frame is Rz(-yaw) F_n, whose horizontal angle is declination - yaw.
+  const double yaw = euler_from_quat(q_nb).z();
+  const Eigen::Quaterniond q_level = Eigen::Quaterniond(Eigen::AngleAxisd(-yaw, Eigen::Vector3d::UnitZ())) * q_nb;
+  const Eigen::Vector3d m_level = q_level * mag_b_uT;
+  const double declination = cfg_.declination_known ? cfg_.mag_declination_rad : 0.0;
+  return declination - std::atan2(m_level.y(), m_level.x());
+}
+
+bool CoarseAlignment::align_in_motion(const GnssObservation& z, double t_now, AlignmentResult& out) {
+  InMotionSolution s;
+  if (!in_motion_.add_gnss(z, t_now, s)) return false;
+  constexpr double kGoodTilt = 0.1;  // 6 deg: the EKF, with this sigma, takes it from there
+  if (s.att_sigma_rad.head<2>().maxCoeff() > kGoodTilt) return false;
+  if (tilt_since_s_ < 0.0) tilt_since_s_ = t_now;
+  const double yaw_now = euler_from_quat(s.q_nb).z();
+  if (s.yaw_observable) {
+    finish_in_motion(z, t_now, s, yaw_now, s.att_sigma_rad.z(), out);
+    return true;
+  }
+  if (cfg_.use_mag && have_mag_) {
+    finish_in_motion(z, t_now, s, mag_heading(s.q_nb, last_mag_b_uT_),
+                     cfg_.declination_known ? cfg_.mag_heading_sigma_rad : cfg_.mag_unknown_declination_sigma_rad, out);
+    return true;
+  }
+  if (t_now - tilt_since_s_ >= cfg_.course_wait_s && z.has_velocity &&
+      z.v_ne_m_s.norm() >= cfg_.min_course_speed_m_s) {
+    finish_in_motion(z, t_now, s, std::atan2(z.v_ne_m_s.y(), z.v_ne_m_s.x()), cfg_.course_heading_sigma_rad, out);
+    return true;
+  }
+  return false;
+}
+
+void CoarseAlignment::finish_in_motion(const GnssObservation& z, double t_now, const InMotionSolution& s,
+                                       double yaw, double yaw_sigma, AlignmentResult& out) {
+  const double turn = yaw - euler_from_quat(s.q_nb).z();
+  out.nav.q_nb = (Eigen::Quaterniond(Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ())) * s.q_nb).normalized();
+  out.at_rest = false;
+  out.att_sigma_rad = {s.att_sigma_rad.x(), s.att_sigma_rad.y(), yaw_sigma};
+  out.gyro_bias_rad_s = s.gyro_bias_rad_s;
+  out.gyro_bias_sigma_rad_s = s.gyro_bias_sigma_rad_s.maxCoeff();
+  out.nav.v_n_m_s = z.has_velocity ? Eigen::Vector3d(z.v_ne_m_s.x(), z.v_ne_m_s.y(), 0.0) : Eigen::Vector3d::Zero();
+  out.nav.lat_rad = z.lat_rad;
+  out.nav.lon_rad = z.lon_rad;
+  out.nav.h_m = z.h_m;
+  out.nav.t_s = t_now;
+  // Horizontal velocity from the fix; vertical unknown (NMEA has none): a climb's few m/s.
+  out.vel_sigma_m_s = {z.sigma_vel_m_s, z.sigma_vel_m_s, 3.0};
+  out.temp_ref_degC = last_temp_degC_;
+  status_ = AlignStatus::Aligned;
+}
+
 void CoarseAlignment::finish(const GnssObservation& z, double t_now, double turn, double yaw_sigma,
                              AlignmentResult& out) {
   const RestEstimate& r = rest_.estimate();
@@ -65,6 +131,8 @@ void CoarseAlignment::finish(const GnssObservation& z, double t_now, double turn
   const double carried = r.mean_rate_sigma_rad_s * carried_s_;
   const double tilt = std::sqrt(2e-3 * 2e-3 + carried * carried);
   out.att_sigma_rad = {tilt, tilt, yaw_sigma};
+  // Levelled at rest and aligned on the next fix, or at the course speed a few s later.
+  out.vel_sigma_m_s = Eigen::Vector3d::Constant(std::max(0.5, z.sigma_vel_m_s));
   out.nav.q_nb = (rot_down * q_now_).normalized();
   out.nav.v_n_m_s = z.has_velocity ? Eigen::Vector3d(z.v_ne_m_s.x(), z.v_ne_m_s.y(), 0.0) : Eigen::Vector3d::Zero();
   out.nav.lat_rad = z.lat_rad;

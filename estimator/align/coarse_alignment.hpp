@@ -2,15 +2,21 @@
 // Initial alignment: the first attitude, position and velocity of the INS,
 // and how uncertain they are. No rest period is required.
 //   Tilt: levelled at rest (rest_levelling.hpp) and carried by the gyros
-//     from the end of the rest period.
+//     from the end of the rest period; without a rest (a start in motion, a
+//     reboot in the air) from the in-motion alignment (in_motion_alignment.hpp,
+//     gravity and GNSS velocity over a few seconds).
 //   Heading, in order of preference:
-//     - the magnetometer at rest, as soon as there is a fix: with the site's
+//     - at rest, the magnetometer, as soon as there is a fix: with the site's
 //       declination (sigma a few deg), or without it (sigma covers any
 //       declination; the Earth-field states and GNSS motion refine it);
-//     - the GNSS course once the speed passes min_course_speed_m_s (sigma
-//       covers crab and sideslip).
+//     - in motion, the in-motion alignment's own heading once the velocity
+//       has changed enough to show it; else the magnetometer; else, after
+//       course_wait_s of tilt without either, the GNSS course;
+//     - at rest without a magnetometer, the GNSS course once the speed
+//       passes min_course_speed_m_s (sigma covers crab and sideslip).
 // Status: WaitingForRest (no tilt yet), Levelled (tilt known, waiting for a
 // heading), Aligned.
+#include "estimator/align/in_motion_alignment.hpp"
 #include "estimator/align/rest_levelling.hpp"
 #include "estimator/ekf/aiding/gnss_observation.hpp"
 #include "estimator/ins/imu_sample.hpp"
@@ -22,6 +28,8 @@ enum class AlignStatus { WaitingForRest, Levelled, Aligned };
 
 struct AlignmentConfig {
   RestConfig rest;
+  InMotionAlignmentConfig in_motion;
+  double course_wait_s = 5.0;              // in motion, no heading from the velocity change: the course after this
   double min_course_speed_m_s = 3.0;       // course from a GNSS receiver is unreliable below walking speed
   double course_heading_sigma_rad = 0.15;  // heading minus course: crab in wind, a car's sideslip
   bool use_mag = true;                     // heading from the magnetometer at rest when there is one
@@ -34,6 +42,7 @@ struct AlignmentConfig {
 struct AlignmentResult {
   NavState nav;
   Eigen::Vector3d att_sigma_rad{0.02, 0.02, 0.1};  // tilt about north, east; yaw
+  Eigen::Vector3d vel_sigma_m_s{0.5, 0.5, 0.5};    // NED (in motion: NMEA has no vertical velocity)
   bool at_rest = false;                             // levelled at rest: the fields below hold
   Eigen::Vector3d rest_specific_force_b_m_s2 = Eigen::Vector3d::Zero();  // rest window mean
   double rest_specific_force_sigma_m_s2 = 0.0;      // standard error of that mean
@@ -54,10 +63,20 @@ class CoarseAlignment {
 
  private:
   void finish(const GnssObservation& z, double t_now_s, double turn_rad, double yaw_sigma_rad, AlignmentResult& out);
+  bool align_in_motion(const GnssObservation& z, double t_now_s, AlignmentResult& out);
+  void finish_in_motion(const GnssObservation& z, double t_now_s, const InMotionSolution& s, double yaw_rad,
+                        double yaw_sigma_rad, AlignmentResult& out);
+  /// Heading [rad] from a body-frame field and an attitude whose tilt is known.
+  double mag_heading(const Eigen::Quaterniond& q_nb, const Eigen::Vector3d& mag_b_uT) const;
 
   AlignmentConfig cfg_;
   AlignStatus status_ = AlignStatus::WaitingForRest;
   RestLevelling rest_;
+  InMotionAlignment in_motion_;
+  Eigen::Vector3d last_mag_b_uT_ = Eigen::Vector3d::Zero();
+  bool have_mag_ = false;
+  double last_temp_degC_ = 0.0;
+  double tilt_since_s_ = -1.0;  // first in-motion solution with a good tilt (-1: none yet)
   Eigen::Quaterniond q_now_ = Eigen::Quaterniond::Identity();  // rest attitude (yaw 0) carried by the gyros
   double carried_s_ = 0.0;                                      // since the end of the rest
 };

@@ -15,7 +15,7 @@ struct EffectTuning {
       0.02,    // accel_scale [-] (20000 ppm)
       0.02,    // gyro_scale [-]
       1.0,     // lever_arm [m]
-      0.2,     // gps_latency [s]
+      0.1,     // gps_latency [s] (serial NMEA: 0.02-0.2 s after the fix)
       0.01,    // accel_temp_bias [m/s^2/degC]
       1e-3,    // gyro_temp_bias [rad/s/degC]
       0.1,     // accel_bias [m/s^2] (ICM-20948 class: +-0.06..0.2 turn-on)

@@ -262,6 +262,16 @@ void ErrorStateFilter::set_gps_bias_sigma(const Eigen::Vector3d& fix_sigma_ned_m
   gps_bias_sigma_ned_m_ = var.cwiseSqrt();
 }
 
+void ErrorStateFilter::seed_position_from_fix(const Eigen::Vector3d& fix_sigma_ned_m) {
+  reset_block(layout_.pos, fix_sigma_ned_m.cwiseMax(0.1));
+  if (!layout_.has(Effect::GpsPositionBias)) return;
+  // p_hat = p + b + w: dp = b + w; the bias state's error is b (true - estimated, b_hat = 0).
+  const Eigen::Index p = layout_.pos.start, b = layout_.of(Effect::GpsPositionBias).start;
+  const Eigen::Matrix3d Pbb = P_.block(b, b, 3, 3);
+  P_.block(p, b, 3, 3) = Pbb;
+  P_.block(b, p, 3, 3) = Pbb;
+}
+
 void ErrorStateFilter::add_axis_states(Eigen::Index axis, StateMask& mask) const {
   const StateLayout& L = layout_;
   for (Eigen::Index j = 0; j < L.order; ++j) mask.set(static_cast<std::size_t>(L.sensor_state(axis) + j));

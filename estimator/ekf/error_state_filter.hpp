@@ -67,6 +67,11 @@ class ErrorStateFilter {
   /// Sets the correlated error's level from a fix's stated sigma (its
   /// tuning fraction): at once (and P with it) when dt_s <= 0, else averaged.
   void set_gps_bias_sigma(const Eigen::Vector3d& fix_sigma_ned_m, double dt_s);
+  /// The position was just set from a fix with this sigma: its error is the
+  /// fix's (the receiver's correlated error and white noise), and shares the
+  /// correlated part with the GPS-bias states (else the next fixes would count
+  /// that error twice).
+  void seed_position_from_fix(const Eigen::Vector3d& fix_sigma_ned_m);
   Eigen::Vector3d mag_earth_field_n_uT() const { return mag_field_n_; }
   Eigen::Vector3d mag_hard_iron_b_uT() const { return mag_hard_iron_b_; }
   /// Soft-iron matrix I + D (identity without the mag_soft_iron states).

@@ -2,9 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include "estimator/ins/rotation.hpp"
 
 #include "estimator/earth/wgs84.hpp"
 #include "estimator/ekf/aiding/gnss_position/gnss_position.hpp"
@@ -210,8 +207,9 @@ void Navigator::align(const ImuSample& s, double dt) {
     if (!alignment_.add_gnss(z, s.t_s, res)) continue;
     nav_ = res.nav;
     filter_.seed_attitude(res.att_sigma_rad);
+    filter_.reset_block(filter_.layout().vel, res.vel_sigma_m_s);
+    filter_.seed_gyro_bias(res.gyro_bias_rad_s, res.gyro_bias_sigma_rad_s);
     if (res.at_rest) {
-      filter_.seed_gyro_bias(res.gyro_bias_rad_s, res.gyro_bias_sigma_rad_s);
       // Floor: normal gravity against the site's true gravity (anomalies ~1e-3 g).
       const double g = wgs84::normal_gravity_m_s2(nav_.lat_rad, nav_.h_m);
       filter_.seed_accel_bias_at_rest(nav_, res.rest_specific_force_b_m_s2, g,
@@ -219,6 +217,7 @@ void Navigator::align(const ImuSample& s, double dt) {
     }
     filter_.set_reference_temperature(res.temp_ref_degC);
     filter_.set_gps_bias_sigma(z.sigma_ned_m, 0.0);
+    filter_.seed_position_from_fix(z.sigma_ned_m);
     recovery_.restart(s.t_s);
     last_gnss_pos_t_s_ = s.t_s;
     events_ |= nav_flag::kAlignedNow;
@@ -402,11 +401,6 @@ bool Navigator::fuse(AidingSource src, const Measurement& m, double t_meas) {
     events_ |= kRejected[i];
   }
   if (observer_) observer_->on_innovation(rec);
-  if (std::getenv("DBG") && t_meas < std::atof(std::getenv("DBG"))) {
-    const Eigen::Index a = filter_.layout().att.start + 2;
-    std::fprintf(stderr, "t=%.3f src=%d yaw_sig=%.3f deg yaw=%.3f\n", t_meas, int(src), std::sqrt(filter_.P()(a, a)) * 57.2958,
-                 euler_from_quat(nav_.q_nb).z() * 57.2958);
-  }
   return rec.result.accepted;
 }
 

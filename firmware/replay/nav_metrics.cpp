@@ -56,6 +56,7 @@ void NavMetrics::score_gnss(const TruthPoint& a, const TruthPoint& b) {
 void NavMetrics::add_truth(const TruthPoint& tr, const est::NavState& nav, const Eigen::Matrix<double, 9, 9>& P) {
   namespace w = est::wgs84;
   if (have_prev_truth_) score_gnss(prev_truth_, tr);
+  if (!have_prev_truth_) first_truth_t_s_ = tr.t_s;
   prev_truth_ = tr;
   have_prev_truth_ = true;
   const Eigen::Vector3d dp((nav.lat_rad - tr.lat_rad) * (w::meridian_radius_m(tr.lat_rad) + tr.h_m),
@@ -89,7 +90,9 @@ void NavMetrics::add_truth(const TruthPoint& tr, const est::NavState& nav, const
   double lo = 0.0, hi = 0.0;
   chi2_bounds_95(dof, lo, hi);
   nees_dof = dof;
-  nees.add(ev.dot(Pn.ldlt().solve(ev)), lo, hi);
+  const double nees_value = ev.dot(Pn.ldlt().solve(ev));
+  nees.add(nees_value, lo, hi);
+  if (tr.t_s >= first_truth_t_s_ + kSettleS) nees_settled.add(nees_value, lo, hi);
   for (OutageDrift& o : outages) {
     if (tr.t_s >= o.window.start_s && tr.t_s <= o.window.start_s + o.window.duration_s) {
       o.max_drift_h_m = std::max(o.max_drift_h_m, err_h);

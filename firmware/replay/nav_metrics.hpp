@@ -56,6 +56,12 @@ class NavMetrics {
   std::uint64_t gnss_compared = 0;
   double gnss_sum_h2 = 0.0, gnss_sum_v2 = 0.0;
   ChiStats nees;
+  // The same from kSettleS after the first solution on: the priors of a
+  // fresh alignment (heading without the declination, tilt against the
+  // accelerometer bias) are honest but wide, and the NEES sits below its
+  // lower bound while they last.
+  static constexpr double kSettleS = 60.0;
+  ChiStats nees_settled;
   int nees_dof = 0;
   std::array<ChiStats, est::kAidingSourceCount> nis{};
   std::vector<OutageDrift> outages;
@@ -65,6 +71,7 @@ class NavMetrics {
   est::RingBuffer<GnssPoint, 64> pending_gnss_;
   TruthPoint prev_truth_;
   bool have_prev_truth_ = false;
+  double first_truth_t_s_ = 0.0;
   Eigen::Vector3d lever_arm_b_m_ = Eigen::Vector3d::Zero();
 };
 

@@ -32,7 +32,9 @@ struct ReplayOptions {
   est::EffectSet effects = default_effects();
   double gps_period_s = 0.0;  // 0: every epoch
   std::vector<Outage> outages;
-  double gps_latency_s = 0.0;
+  // The fix's latency at arrival (initial value of the gps_latency state):
+  // an NMEA epoch arrives some tens of ms after its time of validity.
+  double gps_latency_s = 0.05;
   Eigen::Vector3d lever_arm_b_m = Eigen::Vector3d::Zero();
   double nav_rate_hz = 10.0;  // nav.csv rows per second; 0: every IMU sample
   double gate_sigma = 5.0;

@@ -398,7 +398,9 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
   }
   sj["nis"] = nis;
   sj["nees"] = {{"dof", metrics.nees_dof}, {"count", metrics.nees.count}, {"mean", metrics.nees.mean()},
-                {"inside_95", metrics.nees.inside_fraction()}};
+                {"inside_95", metrics.nees.inside_fraction()},
+                {"after_settling", {{"from_s", NavMetrics::kSettleS}, {"mean", metrics.nees_settled.mean()},
+                                    {"inside_95", metrics.nees_settled.inside_fraction()}}}};
   json rejected = json::object(), accepted = json::object();
   for (std::size_t i = 0; i < est::kAidingSourceCount; ++i) {
     rejected[est::kAidingSourceNames[i]] = c.rejected[i];

@@ -1,0 +1,22 @@
+#pragma once
+// A replay's nav.csv against the dataset's truth.csv, for the tests: the
+// horizontal error of every nav.csv row (truth interpolated linearly in time)
+// and the row's health flags; window statistics over it.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sinu::test {
+
+struct ErrorSeries {
+  std::vector<double> t, err_h;
+  std::vector<std::uint32_t> flags;
+};
+
+ErrorSeries error_series(const std::string& nav_csv, const std::string& truth_csv);
+/// Over rows with from <= t < to (NaN / 0 when there are none).
+double rms_between(const ErrorSeries& s, double from, double to);
+double max_between(const ErrorSeries& s, double from, double to);
+std::uint32_t flags_between(const ErrorSeries& s, double from, double to);
+
+}  // namespace sinu::test
