@@ -41,6 +41,15 @@ void ErrorStateFilter::init(const StateLayout& layout, const SensorNoise& noise,
   ar_clock_s_ = 0.0;
 }
 
+void ErrorStateFilter::reanchor_hard_iron(const NavState& nav, const Eigen::Vector3d& mag_b_uT, double sigma_uT) {
+  if (!layout_.has(Effect::MagHardIron)) return;
+  const Eigen::Vector3d predicted = mag_soft_iron() * (nav.C_nb().transpose() * mag_field_n_);
+  mag_hard_iron_b_ = mag_b_uT - predicted;
+  const Slice& H = layout_.of(Effect::MagHardIron);
+  const double keep = std::sqrt(P_.block(H.start, H.start, 3, 3).diagonal().maxCoeff());
+  reset_block(H, Eigen::Vector3d::Constant(std::hypot(sigma_uT, keep)));
+}
+
 void ErrorStateFilter::activate_deferred() {
   if (!layout_.has_deferred()) return;
   const Eigen::Index n = layout_.dim;

@@ -78,6 +78,11 @@ class ErrorStateFilter {
   Eigen::Matrix3d mag_soft_iron() const;
   const EffectTuning& tuning() const { return tuning_; }
 
+  /// The hard iron set to what the field sample says with the current
+  /// attitude and Earth field: h = m - S C_bn F, sigma `sigma_uT`, its
+  /// correlations cleared.
+  void reanchor_hard_iron(const NavState& nav, const Eigen::Vector3d& mag_b_uT, double sigma_uT);
+
   /// Switches the layout's deferred effects on: P grows by their states, with
   /// their prior variances and no correlation with the rest.
   void activate_deferred();

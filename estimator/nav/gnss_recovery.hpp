@@ -49,9 +49,10 @@ class GnssRecovery {
   RecoveryAction on_velocity(double t_s, bool accepted, double speed_m_s);
   bool lost(double t_s) const;
   bool gnss_suspect(double t_s) const;
+  /// A GNSS velocity was accepted recently: the INS (and its attitude) moves as the receiver says.
+  bool velocity_agrees(double t_s) const { return t_s - last_vel_accept_s_ <= cfg_.velocity_agrees_within_s; }
 
  private:
-  bool velocity_agrees(double t_s) const { return t_s - last_vel_accept_s_ <= cfg_.velocity_agrees_within_s; }
 
   RecoveryConfig cfg_;
   double last_pos_accept_s_ = 0.0, last_vel_accept_s_ = -1e300;

@@ -48,6 +48,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   last_gnss_speed_m_s_ = 1e9;
   last_zupt_t_s_ = last_nhc_t_s_ = 0.0;
   mag_noise_.configure(cfg.mag_noise, cfg.mag_sigma_uT);
+  mag_reject_since_s_ = -1.0;
   have_prev_ = have_raw_ = mag_started_ = in_timeout_ = false;
   raw_period_s_ = period_s_ = horizontal_accel_m_s2_ = accel_diff_var_ = gyro_diff_var_ = 0.0;
   clip_until_t_s_.fill(kNever);
@@ -355,9 +356,21 @@ void Navigator::fuse_magnetometer(const ImuSample& s) {
   if (s.t_s - last_mag_fused_t_s_ < cfg_.mag_period_s - 1e-6) return;
   const double since = s.t_s - last_mag_fused_t_s_;
   last_mag_fused_t_s_ = s.t_s;
-  fuse(AidingSource::Magnetometer, magnetometer_measurement(filter_, nav_, s.mag_b_uT, mag_noise_.sigma(), cfg_.gate_sigma),
-       s.t_s);
+  const bool ok = fuse(AidingSource::Magnetometer,
+                       magnetometer_measurement(filter_, nav_, s.mag_b_uT, mag_noise_.sigma(), cfg_.gate_sigma), s.t_s);
   mag_noise_.learn(last_result_, since);
+  if (ok) {
+    mag_reject_since_s_ = -1.0;
+    return;
+  }
+  if (mag_reject_since_s_ < 0.0) mag_reject_since_s_ = s.t_s;
+  const bool attitude_vouched = recovery_.velocity_agrees(s.t_s);
+  if (s.t_s - mag_reject_since_s_ >= cfg_.mag_reanchor_after_s && attitude_vouched) {
+    predict_.flush(filter_);
+    filter_.reanchor_hard_iron(nav_, s.mag_b_uT, 2.0 * mag_noise_.sigma());
+    ++counters_.mag_reanchors;
+    mag_reject_since_s_ = -1.0;
+  }
 }
 
 void Navigator::fuse_vehicle_constraints(const ImuSample& s, const BodyRates& now) {

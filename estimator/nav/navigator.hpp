@@ -79,6 +79,11 @@ struct NavigatorConfig {
   NoiseAdapterConfig gnss_velocity_noise{true, 60.0, 0.02, 2.0};
   NoiseAdapterConfig mag_noise{true, 60.0, 0.1, 5.0};
   double mag_period_s = 0.1;          // fuse at most this often (10 Hz)
+  // A magnetometer rejected this long while the GNSS velocity vouches for the
+  // attitude is disturbed by a new field of the vehicle's own (motor currents
+  // after take-off, a payload switched on): the hard iron is re-anchored to
+  // what the sensor reads now (PX4 EKF2 realigns its field in flight likewise).
+  double mag_reanchor_after_s = 1.0;
   double covariance_period_s = 0.1;  // covariance prediction at most this far apart (0: every sample)
   // Faults.
   double clip_error_fraction = 0.5;   // 1 sigma of the unknown true value of a clipped axis, x full scale
@@ -171,6 +176,7 @@ class Navigator {
   ImuSample prev_;
   bool have_prev_ = false;
   bool mag_started_ = false;
+  double mag_reject_since_s_ = -1.0;
   double last_mag_fused_t_s_ = 0.0, last_mag_sample_t_s_ = 0.0;
   Eigen::Vector3d accel_n_ = Eigen::Vector3d::Zero();
   StateVec dx_;
