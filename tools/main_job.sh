@@ -7,7 +7,7 @@
 # AR sensor-error model, with GPS and with 30-s GPS outages, and print the
 # navigation summaries and a GM-versus-AR report; then ask `sinu diagnose`
 # whether the data show a physical effect the model lacks. Then the real
-# drive in ../shared/ when present.
+# drive and the real quadcopter in ../shared/ when present.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SINU=build/release/firmware/sinu
@@ -21,13 +21,13 @@ mkdir -p "$out"
 # every replay below reads that recording through the HAL replay back ends and
 # the drivers, as the board would have seen it.
 "$SINU" convert "$out/flight" "$out/flight.raw"
-# accel_bias/gyro_bias: the unit's per-power-on bias (not in calib.json's zero-mean
-# models); gps_position_bias: the receiver's slowly varying error.
+# The default options: the turn-on biases, the receiver's slowly varying error
+# and its latency are default states; the magnetometer's noise and the GNSS
+# velocity's are learnt from the innovations.
 t0=$(awk -F, 'NR==2 {print $1; exit}' "$out/flight/imu.csv")
 outages=$(awk -v t="$t0" 'BEGIN {printf "%.1f:30,%.1f:30,%.1f:30,%.1f:30", t+300, t+700, t+1100, t+1500}')
 for model in gm ar; do
-  common=(--in "$out/flight.raw" --truth "$out/flight/truth.csv" --calib "$out/calib.json" --model "$model" --gps-latency 0.045
-          --effects accel_bias,gyro_bias,gps_position_bias)
+  common=(--in "$out/flight.raw" --truth "$out/flight/truth.csv" --calib "$out/calib.json" --model "$model")
   "$SINU" replay "${common[@]}" --out "$out/replay_$model"
   "$SINU" replay "${common[@]}" --outage "$outages" --out "$out/outages_$model"
 done
@@ -41,13 +41,23 @@ for model in gm ar; do
     "$(field "$out/outages_$model" outage_max_drift_h_rms_m)"
 done
 # Model against measurements: does the replayed flight show an effect the model lacks?
-"$SINU" diagnose --in "$out/flight.raw" --truth "$out/flight/truth.csv" --calib "$out/calib.json" --model gm --gps-latency 0.045 --rounds 1 \
+"$SINU" diagnose --in "$out/flight.raw" --truth "$out/flight/truth.csv" --calib "$out/calib.json" --model gm --rounds 1 \
   --out "$out/diagnose"
 drive=../shared/data/real/drive_0708
 if [ -d "$drive" ]; then
   "$SINU" inspect dataset "$drive"
-  "$SINU" replay --in "$drive" --model gm --effects accel_bias,gyro_bias --gps-latency 0.05 --lever-arm 0,-0.05,0 \
-    --out "$out/drive_0708"
+  # A car: the non-holonomic constraint and zero-velocity updates (--vehicle ground); ten 15-s GNSS outages
+  # every 45 s from 60 s after it first moves faster than 3 m/s.
+  moving=$(awk -F, '$2 ~ /RMC$/ && $9 * 0.514444 > 3 {print $1; exit}' "$drive/gps.nmea")
+  drive_outages=$(awk -v t="$moving" 'BEGIN {for (k = 0; k < 10; ++k) printf "%s%.3f:15", (k ? "," : ""), t + 60 + 45 * k}')
+  "$SINU" replay --in "$drive" --vehicle ground --outage "$drive_outages" --out "$out/drive_0708"
 else
   echo "main_job.sh: $drive is absent; skipping the real drive" >&2
+fi
+uav=../shared/data/real/uav_log171
+if [ -d "$uav" ]; then
+  # A real quadcopter (ArduPilot log; truth.csv is the autopilot's own EKF, a peer).
+  "$SINU" replay --in "$uav" --out "$out/uav_log171"
+else
+  echo "main_job.sh: $uav is absent; skipping the real quadcopter" >&2
 fi

@@ -17,7 +17,7 @@ RecoveryAction GnssRecovery::on_position(double t_s, bool accepted, double innov
     return RecoveryAction::None;
   }
   last_pos_reject_s_ = t_s;
-  jump_ = innovation_h_m > std::max(cfg_.jump_min_m, cfg_.jump_sigmas * fix_sigma_h_m);
+  jump_ = is_jump(innovation_h_m, fix_sigma_h_m);
   if (!pos_rejecting_) {
     pos_rejecting_ = true;
     pos_reject_since_s_ = t_s;

@@ -18,6 +18,7 @@
 // A solution whose position and velocity have both been rejected for
 // `lost_after_s`, while fixes keep arriving, is lost until the next accepted
 // position (no fixes at all is an outage, not a loss).
+#include <algorithm>
 #include <cstdint>
 
 namespace sinu::est {
@@ -49,6 +50,10 @@ class GnssRecovery {
   RecoveryAction on_velocity(double t_s, bool accepted, double speed_m_s);
   bool lost(double t_s) const;
   bool gnss_suspect(double t_s) const;
+  /// A horizontal misfit large enough to be the receiver's jump, not the filter's error.
+  bool is_jump(double innovation_h_m, double fix_sigma_h_m) const {
+    return innovation_h_m > std::max(cfg_.jump_min_m, cfg_.jump_sigmas * fix_sigma_h_m);
+  }
   /// A GNSS velocity was accepted recently: the INS (and its attitude) moves as the receiver says.
   bool velocity_agrees(double t_s) const { return t_s - last_vel_accept_s_ <= cfg_.velocity_agrees_within_s; }
 

@@ -428,6 +428,7 @@ bool run_replay(const ReplayOptions& opt, ReplayTotals& totals, std::string& err
                   {"first_lost_t", c.lost_total_s > 0.0 ? json(c.first_lost_t_s) : json(nullptr)},
                   {"resets", {{"position", c.position_resets}, {"velocity", c.velocity_resets}, {"yaw", c.yaw_resets}}},
                   {"magnetometer_reanchors", c.mag_reanchors},
+                  {"position_inflations", c.position_inflations},
                   {"first_reset_t", c.resets() ? json(c.first_reset_t_s) : json(nullptr)},
                   {"gnss_timeouts", c.gnss_timeouts},
                   {"gnss_timeout_s", c.gnss_timeout_total_s}};

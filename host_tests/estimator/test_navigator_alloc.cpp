@@ -46,5 +46,58 @@ TEST(NavigatorAlloc, LoopAllocatesNothingAfterInit) {
   }
 }
 
+// The fault paths too: a start in flight (in-motion alignment), a ground
+// vehicle's constraints, a NaN, a repeated time stamp, a 3 s gap, clipping,
+// a GNSS outage and a GNSS jump long enough to be reset to, a magnetometer
+// disturbance that re-anchors the hard iron.
+TEST(NavigatorAlloc, FaultPathsAllocateNothing) {
+  const auto truth = AnalyticFlight(FlightProfile{}).sample(40.0, 400.0);
+  auto gnss = AnalyticFlight::gnss(truth, 8, 0.05, Eigen::Vector3d::Zero(), 0.5, 0.1);
+  const Eigen::Vector3d earth_field_n_uT(20.0, 2.0, 40.0);
+  std::vector<est::ImuSample> imu;
+  for (std::size_t i = 2000; i < truth.size(); ++i) {  // 50 s in: moving, no rest period
+    est::ImuSample s = truth[i].imu;
+    s.mag_b_uT = truth[i].nav.C_nb().transpose() * earth_field_n_uT;
+    s.has_mag = true;
+    if (i >= 8000 && i < 8400) s.mag_b_uT.z() += 15.0;  // a motor switched on
+    if (i == 6000) s.specific_force_b_m_s2.x() = NAN;
+    if (i >= 7000 && i < 7040) s.specific_force_b_m_s2.setConstant(39.2266);  // pegged
+    if (i >= 9000 && i < 9120) continue;                                       // a 3 s gap
+    imu.push_back(s);
+    if (i == 10000) imu.push_back(s);  // the same time stamp again
+  }
+  std::vector<est::GnssObservation> fixes;
+  for (est::GnssObservation z : gnss) {
+    const double t = z.arrival_s - truth.front().nav.t_s;
+    if (t > 260.0 && t < 290.0) continue;                  // outage
+    if (t > 300.0 && t < 320.0) z.lat_rad += 200.0 / 6.37e6;  // a jump held off, then reset to
+    fixes.push_back(z);
+  }
+  est::NavigatorConfig cfg;
+  cfg.noise = est::SensorNoise::defaults(est::NoiseModelKind::AutoRegressive);
+  cfg.gps_latency_s = 0.05;
+  cfg.vehicle = est::VehicleKind::Ground;
+  cfg.recovery.jump_hold_s = 10.0;
+  for (std::size_t e = 0; e < est::kEffectCount; ++e) cfg.effects.add(static_cast<est::Effect>(e));
+  NullObserver obs;
+  auto nav = std::make_unique<est::Navigator>();
+  auto prefilter = est::make_wavelet_prefilter(est::wavelet::WaveletKind::Db4, 3);
+  nav->init(cfg, &obs, prefilter.get());
+  AllocationScope scope;
+  feed(*nav, imu, fixes);
+  EXPECT_EQ(scope.count(), 0u);
+  ASSERT_TRUE(nav->aligned());
+  const est::NavCounters& c = nav->counters();
+  // Each path was taken (not a vacuous zero).
+  EXPECT_EQ(c.imu_invalid, 1u);
+  EXPECT_GE(c.imu_non_increasing, 1u);
+  EXPECT_EQ(c.imu_gaps, 1u);
+  EXPECT_GE(c.imu_clipped_samples, 30u);
+  EXPECT_GE(c.gnss_timeouts, 1u);
+  EXPECT_GE(c.position_resets, 1u);
+  EXPECT_GT(c.accepted[static_cast<std::size_t>(est::AidingSource::Nonholonomic)], 100u);
+  EXPECT_GE(c.mag_reanchors, 1u);
+}
+
 }  // namespace
 }  // namespace sinu::test
