@@ -18,6 +18,24 @@ class NullObserver final : public est::NavObserver {
   int accepted = 0;
 };
 
+/// Every effect state, the wavelet prefilter in front; the navigator after
+/// the run, and the heap allocations counted while it ran.
+struct AllocRun {
+  std::unique_ptr<est::Navigator> nav = std::make_unique<est::Navigator>();
+  NullObserver obs;
+  std::size_t allocations = 0;
+};
+void run_counting(est::NavigatorConfig cfg, const std::vector<est::ImuSample>& imu,
+                  const std::vector<est::GnssObservation>& gnss, AllocRun& run) {
+  cfg.gps_latency_s = 0.05;
+  for (std::size_t e = 0; e < est::kEffectCount; ++e) cfg.effects.add(static_cast<est::Effect>(e));
+  auto prefilter = est::make_wavelet_prefilter(est::wavelet::WaveletKind::Db4, 3);
+  run.nav->init(cfg, &run.obs, prefilter.get());
+  AllocationScope scope;
+  feed(*run.nav, imu, gnss);
+  run.allocations = scope.count();
+}
+
 TEST(NavigatorAlloc, LoopAllocatesNothingAfterInit) {
   const auto truth = AnalyticFlight(FlightProfile{}).sample(40.0, 200.0);
   const auto gnss = AnalyticFlight::gnss(truth, 8, 0.05, Eigen::Vector3d::Zero(), 0.5, 0.1);
@@ -31,18 +49,12 @@ TEST(NavigatorAlloc, LoopAllocatesNothingAfterInit) {
   for (const auto kind : {est::NoiseModelKind::GaussMarkov, est::NoiseModelKind::AutoRegressive}) {
     est::NavigatorConfig cfg;
     cfg.noise = est::SensorNoise::defaults(kind);
-    cfg.gps_latency_s = 0.05;
-    for (std::size_t e = 0; e < est::kEffectCount; ++e) cfg.effects.add(static_cast<est::Effect>(e));
-    NullObserver obs;
-    auto nav = std::make_unique<est::Navigator>();
-    auto prefilter = est::make_wavelet_prefilter(est::wavelet::WaveletKind::Db4, 3);
-    nav->init(cfg, &obs, prefilter.get());
-    AllocationScope scope;
-    feed(*nav, imu, gnss);
-    EXPECT_EQ(scope.count(), 0u);
-    EXPECT_TRUE(nav->aligned());
-    EXPECT_GT(obs.accepted, 1000);  // the loop really fused (not a vacuous zero)
-    EXPECT_GT(nav->counters().accepted[static_cast<std::size_t>(est::AidingSource::Magnetometer)], 1000u);
+    AllocRun run;
+    run_counting(cfg, imu, gnss, run);
+    EXPECT_EQ(run.allocations, 0u);
+    EXPECT_TRUE(run.nav->aligned());
+    EXPECT_GT(run.obs.accepted, 1000);  // the loop really fused (not a vacuous zero)
+    EXPECT_GT(run.nav->counters().accepted[static_cast<std::size_t>(est::AidingSource::Magnetometer)], 1000u);
   }
 }
 
@@ -75,19 +87,13 @@ TEST(NavigatorAlloc, FaultPathsAllocateNothing) {
   }
   est::NavigatorConfig cfg;
   cfg.noise = est::SensorNoise::defaults(est::NoiseModelKind::AutoRegressive);
-  cfg.gps_latency_s = 0.05;
   cfg.vehicle = est::VehicleKind::Ground;
   cfg.recovery.jump_hold_s = 10.0;
-  for (std::size_t e = 0; e < est::kEffectCount; ++e) cfg.effects.add(static_cast<est::Effect>(e));
-  NullObserver obs;
-  auto nav = std::make_unique<est::Navigator>();
-  auto prefilter = est::make_wavelet_prefilter(est::wavelet::WaveletKind::Db4, 3);
-  nav->init(cfg, &obs, prefilter.get());
-  AllocationScope scope;
-  feed(*nav, imu, fixes);
-  EXPECT_EQ(scope.count(), 0u);
-  ASSERT_TRUE(nav->aligned());
-  const est::NavCounters& c = nav->counters();
+  AllocRun run;
+  run_counting(cfg, imu, fixes, run);
+  EXPECT_EQ(run.allocations, 0u);
+  ASSERT_TRUE(run.nav->aligned());
+  const est::NavCounters& c = run.nav->counters();
   // Each path was taken (not a vacuous zero).
   EXPECT_EQ(c.imu_invalid, 1u);
   EXPECT_GE(c.imu_non_increasing, 1u);
