@@ -92,7 +92,7 @@ void Navigator::push_imu(const ImuSample& raw) {
     // A clipped input reaches every prefilter output up to its delay later.
     const double reach = raw.t_s + prefilter_->delay_samples() * raw_period_s_ + 1e-9;
     for (std::size_t a = 0; a < kSensorAxes; ++a)
-      if ((s.clipped_axes >> a) & 1u) clip_until_t_s_[a] = reach;
+      if ((static_cast<unsigned>(s.clipped_axes) >> a) & 1u) clip_until_t_s_[a] = reach;
   }
   ImuSample out;
   if (prefilter_->push(s, out)) push_filtered(out);
@@ -241,7 +241,7 @@ void Navigator::widen_for_faults(const ImuSample& s, double dt) {
   for (std::size_t a = 0; a < kSensorAxes; ++a) {
     const auto i = static_cast<Eigen::Index>(a % 3);
     const bool accel = a < 3;
-    if ((clipped >> a) & 1u) {
+    if ((static_cast<unsigned>(clipped) >> a) & 1u) {
       // The true value is beyond the converter: an unknown error, constant
       // over the burst, so its velocity (attitude) error grows as k dt and the
       // variance by sigma^2 (2k+1) dt^2 per interval.
