@@ -15,6 +15,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libfmt-dev
   clang libclang-rt-14-dev # libFuzzer targets, sanitizer runtimes
   python3 python3-numpy python3-matplotlib   # report plots (tools/*.py via /usr/bin/python3)
+  gpsd-clients             # gpsdecode: gpsd's NMEA decoder checks the NMEA output (Debian 12 ships it here, not in gpsd-tools)
 )
 for arg in "$@"; do
   case "$arg" in
