@@ -13,15 +13,18 @@ packages=(
   libgtest-dev libgmock-dev
   libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev
+  libtomlplusplus-dev      # toml++ 3.3: sinu fly's /etc/sinu/sinu.toml (firmware/board/config)
   clang libclang-rt-14-dev # libFuzzer targets, sanitizer runtimes
   python3 python3-numpy python3-matplotlib   # report plots (tools/*.py via /usr/bin/python3)
+  gpsd-clients             # gpsdecode: gpsd's NMEA decoder checks the NMEA output (Debian 12 ships it here, not in gpsd-tools)
 )
 for arg in "$@"; do
   case "$arg" in
     --cross)
       cross=1
       packages+=(g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user
-                 libgpiod-dev:arm64 libfmt-dev:arm64 libgpiod-dev:armhf libfmt-dev:armhf) ;;
+                 libgpiod-dev:arm64 libfmt-dev:arm64 libgpiod-dev:armhf libfmt-dev:armhf
+                 libtomlplusplus-dev:arm64 libtomlplusplus-dev:armhf) ;;
     --reference) packages+=(python3-pywt python3-scipy octave octave-signal) ;;
     *) echo "setup.sh: unknown option $arg" >&2; exit 2 ;;
   esac

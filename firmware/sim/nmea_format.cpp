@@ -1,44 +1,11 @@
 #include "firmware/sim/nmea_format.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace sinu::sim {
 
-namespace {
-constexpr char kHex[] = "0123456789ABCDEF";
-}  // namespace
-
-std::size_t written_length(int n, std::size_t capacity) {
-  return n < 0 ? 0 : std::min(static_cast<std::size_t>(n), capacity - 1);
-}
-
-std::size_t append_checksum(std::span<char> buf, std::size_t len) {
-  unsigned char x = 0;
-  for (std::size_t i = 1; i < len; ++i) x = static_cast<unsigned char>(x ^ static_cast<unsigned char>(buf[i]));
-  buf[len] = '*';
-  buf[len + 1] = kHex[x >> 4];
-  buf[len + 2] = kHex[x & 0x0F];
-  buf[len + 3] = '\0';
-  return len + 3;
-}
-
-std::size_t format_angle(std::span<char> buf, double deg, int degree_digits, char positive, char negative) {
-  constexpr long long kUnitsPerMinute = 1000000;  // 6 decimals of a minute: 1.9 mm of latitude
-  const long long units = std::llround(std::abs(deg) * 60.0 * kUnitsPerMinute);
-  const long long whole_deg = units / (60 * kUnitsPerMinute);
-  const long long rem = units % (60 * kUnitsPerMinute);
-  const int n = std::snprintf(buf.data(), buf.size(), "%0*lld%02lld.%06lld,%c", degree_digits, whole_deg,
-                              rem / kUnitsPerMinute, rem % kUnitsPerMinute, deg < 0.0 ? negative : positive);
-  return written_length(n, buf.size());
-}
-
 std::size_t format_utc(std::span<char> buf, double utc_s) {
-  const long long cs = std::llround(utc_s * 100.0) % (86400LL * 100);
-  const int n = std::snprintf(buf.data(), buf.size(), "%02lld%02lld%02lld.%02lld", cs / 360000, cs / 6000 % 60,
-                              cs / 100 % 60, cs % 100);
-  return written_length(n, buf.size());
+  return board::format_time_of_day(buf, std::llround(utc_s * 100.0) % (86400LL * 100), 2);
 }
 
 std::size_t corrupt_sentence(std::span<char> buf, std::size_t len, Rng& rng) {
