@@ -12,16 +12,16 @@ int main(int argc, char** argv) {
                "GM/AR noise models, error-state EKF)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "sinu 0.1.0");
-  sinu::app::Action action;
-  sinu::app::add_inspect_command(app, action);
-  sinu::app::add_simulate_command(app, action);
-  sinu::app::add_denoise_command(app, action);
-  sinu::app::add_calibrate_command(app, action);
-  sinu::app::add_replay_command(app, action);
-  sinu::app::add_record_command(app, action);
-  sinu::app::add_convert_command(app, action);
-  sinu::app::add_fly_command(app, action);
-  sinu::app::add_diagnose_command(app, action);
+  sinu::cli::Action action;
+  sinu::cli::add_inspect_command(app, action);
+  sinu::cli::add_simulate_command(app, action);
+  sinu::cli::add_denoise_command(app, action);
+  sinu::cli::add_calibrate_command(app, action);
+  sinu::cli::add_replay_command(app, action);
+  sinu::cli::add_record_command(app, action);
+  sinu::cli::add_convert_command(app, action);
+  sinu::cli::add_fly_command(app, action);
+  sinu::cli::add_diagnose_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -32,13 +32,13 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);  // prints the message and a hint to use --help
-    return sinu::app::kExitUsage;
+    return sinu::cli::kExitUsage;
   }
-  if (!action) return sinu::app::kExitUsage;
+  if (!action) return sinu::cli::kExitUsage;
   try {
     return action();
   } catch (const std::exception& e) {  // last resort: never die without a word
     std::fprintf(stderr, "sinu: error: %s\n", e.what());
-    return sinu::app::kExitFailure;
+    return sinu::cli::kExitFailure;
   }
 }

@@ -5,7 +5,7 @@
 
 #include "drivers/gps/gps_setup.hpp"
 
-namespace sinu::app {
+namespace sinu::cli {
 
 void DeviceOptions::add_to(CLI::App& cmd) {
   cmd.add_option("--i2c", i2c, "I2C bus of the ICM-20948")->capture_default_str();
@@ -69,4 +69,4 @@ board::BoardDevices LinuxBoard::devices() {
   return {drdy_, i2c_, serial_, clock_};
 }
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

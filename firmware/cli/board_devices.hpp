@@ -13,7 +13,7 @@
 #include "hal/linux/termios_serial.hpp"
 #include "hal/recording/recording_taps.hpp"
 
-namespace sinu::app {
+namespace sinu::cli {
 
 struct DeviceOptions {
   std::string i2c = "/dev/i2c-1";
@@ -49,4 +49,4 @@ class LinuxBoard {
   std::unique_ptr<hal::rec::RecordingGpioEdge> drdy_tap_;
 };
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

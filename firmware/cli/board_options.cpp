@@ -1,6 +1,6 @@
 #include "firmware/cli/board_options.hpp"
 
-namespace sinu::app {
+namespace sinu::cli {
 
 void ImuOptions::add_to(CLI::App& cmd) {
   cmd.add_option("--mounting", mounting, "IMU mounting: body FRD axes from chip axes, e.g. x,-y,-z")
@@ -35,4 +35,4 @@ bool ImuOptions::to_config(drivers::Icm20948Config& cfg, std::string& error) con
   return true;
 }
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

@@ -6,7 +6,7 @@
 
 #include "drivers/imu/icm20948.hpp"
 
-namespace sinu::app {
+namespace sinu::cli {
 
 struct ImuOptions {
   std::string mounting = "x,-y,-z";  // chip axes -> FRD (chip flat, component side up)
@@ -16,4 +16,4 @@ struct ImuOptions {
   bool to_config(drivers::Icm20948Config& cfg, std::string& error) const;
 };
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

@@ -6,14 +6,14 @@
 #include <string>
 #include <vector>
 
-#include "firmware/calibration/calib_json.hpp"
-#include "firmware/calibration/calibration_run.hpp"
-#include "firmware/calibration/progress_bar.hpp"
-#include "firmware/calibration/report.hpp"
+#include "firmware/host/calibration/calib_json.hpp"
+#include "firmware/host/calibration/calibration_run.hpp"
+#include "firmware/host/calibration/progress_bar.hpp"
+#include "firmware/host/calibration/report.hpp"
 #include "firmware/cli/command.hpp"
 #include "firmware/cli/exit_codes.hpp"
 
-namespace sinu::app {
+namespace sinu::cli {
 
 namespace {
 
@@ -28,18 +28,18 @@ struct CalibrateOptions {
   bool no_denoise = false, quiet = false;
 };
 
-bool parse_model(const std::string& text, calib::ModelChoice& m) {
+bool parse_model(const std::string& text, calibration::ModelChoice& m) {
   const auto colon = text.find(':');
   if (colon == std::string::npos) return false;
   const std::string method = text.substr(0, colon);
   int found = -1;
-  for (std::size_t i = 0; i < calib::kArMethods; ++i)
-    if (method == calib::kArMethodNames[i]) found = static_cast<int>(i);
+  for (std::size_t i = 0; i < calibration::kArMethods; ++i)
+    if (method == calibration::kArMethodNames[i]) found = static_cast<int>(i);
   if (found < 0) return false;
   try {
     const int p = std::stoi(text.substr(colon + 1));
-    if (p < 1 || p > static_cast<int>(calib::kMaxArOrder)) return false;
-    m.method = static_cast<calib::ArMethod>(found);
+    if (p < 1 || p > static_cast<int>(calibration::kMaxArOrder)) return false;
+    m.method = static_cast<calibration::ArMethod>(found);
     m.order = static_cast<std::size_t>(p);
   } catch (const std::exception&) {
     return false;
@@ -48,28 +48,28 @@ bool parse_model(const std::string& text, calib::ModelChoice& m) {
 }
 
 int run_calibrate(const CalibrateOptions& o) {
-  calib::ModelChoice model;
+  calibration::ModelChoice model;
   if (!parse_model(o.model, model)) {
     std::fprintf(stderr, "sinu calibrate: --model '%s': expected METHOD:P with METHOD yule_walker|covariance|burg "
                          "and P in 1..10\n", o.model.c_str());
     return kExitUsage;
   }
-  calib::CalibrationRun run;
+  calibration::CalibrationRun run;
   if (o.no_denoise) {
-    run.denoiser = calib::no_denoiser();
+    run.denoiser = calibration::no_denoiser();
   } else {
     std::string why;
-    if (!calib::make_wavelet_denoiser(o.wavelet, o.levels, run.denoiser, why)) {
+    if (!calibration::make_wavelet_denoiser(o.wavelet, o.levels, run.denoiser, why)) {
       std::fprintf(stderr, "sinu calibrate: %s\n", why.c_str());
       return kExitUsage;
     }
   }
   for (const std::string& in : o.inputs) {
-    calib::StaticSession session;
-    io::Diagnostic err;
-    calib::ProgressBar reading("reading " + in, static_cast<double>(kRowsPer8h), !o.quiet);
+    calibration::StaticSession session;
+    dataset::Diagnostic err;
+    calibration::ProgressBar reading("reading " + in, static_cast<double>(kRowsPer8h), !o.quiet);
     bool shown = false;
-    const bool ok = calib::load_static_session(in, session, err, [&](std::size_t rows) {
+    const bool ok = calibration::load_static_session(in, session, err, [&](std::size_t rows) {
       shown = true;
       reading.update(static_cast<double>(rows));
     });
@@ -82,19 +82,19 @@ int run_calibrate(const CalibrateOptions& o) {
       std::fprintf(stderr, "sinu calibrate: %s: %zu rows without accelerometer/gyro values skipped, %zu gaps in time\n",
                    in.c_str(), session.rows_without_imu, session.gaps);
     }
-    calib::ProgressBar fitting("fitting " + in, static_cast<double>(calib::kImuAxes.size()),
+    calibration::ProgressBar fitting("fitting " + in, static_cast<double>(calibration::kImuAxes.size()),
                                !o.quiet && session.duration_s > kLongSession_s);
     double done = 0.0;
-    run.sessions.push_back(calib::calibrate_session(session, run.denoiser, model, [&] { fitting.update(++done); }));
+    run.sessions.push_back(calibration::calibrate_session(session, run.denoiser, model, [&] { fitting.update(++done); }));
     fitting.finish();
   }
   std::string why;
-  if (!calib::write_calib_json(run, o.out, why)) {
+  if (!calibration::write_calib_json(run, o.out, why)) {
     std::fprintf(stderr, "sinu calibrate: %s\n", why.c_str());
     return kExitFailure;
   }
   if (!o.report_dir.empty()) {
-    if (!calib::write_report(run, o.report_dir, why)) {
+    if (!calibration::write_report(run, o.report_dir, why)) {
       std::fprintf(stderr, "sinu calibrate: %s\n", why.c_str());
       return kExitFailure;
     }
@@ -125,4 +125,4 @@ void add_calibrate_command(CLI::App& app, Action& action) {
   cmd->callback([&action, o] { action = [o] { return run_calibrate(*o); }; });
 }
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

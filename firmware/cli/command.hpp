@@ -4,7 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 
-namespace sinu::app {
+namespace sinu::cli {
 
 using Action = std::function<int()>;
 
@@ -20,4 +20,4 @@ void add_convert_command(CLI::App& app, Action& action);
 void add_fly_command(CLI::App& app, Action& action);
 void add_diagnose_command(CLI::App& app, Action& action);
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

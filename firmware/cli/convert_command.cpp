@@ -8,15 +8,15 @@
 
 #include "drivers/imu/emulated_icm20948.hpp"
 #include "firmware/board/board_loop.hpp"
-#include "firmware/board/dataset_devices.hpp"
-#include "firmware/board/dataset_sink.hpp"
+#include "firmware/host/convert/dataset_devices.hpp"
+#include "firmware/host/convert/dataset_sink.hpp"
 #include "firmware/cli/board_options.hpp"
 #include "firmware/cli/command.hpp"
 #include "firmware/cli/exit_codes.hpp"
 #include "hal/recording/recording_taps.hpp"
 #include "hal/replay/replay_devices.hpp"
 
-namespace sinu::app {
+namespace sinu::cli {
 
 namespace {
 
@@ -37,7 +37,7 @@ class CountingSink final : public board::BoardSink {
 int dataset_to_raw(const ConvertOptions& o, const drivers::Icm20948Config& cfg) {
   hal::ManualClock clock;
   drivers::EmulatedIcm20948 chip(cfg.address, cfg.mounting);
-  board::DatasetDevices data(chip, clock);
+  convert::DatasetDevices data(chip, clock);
   if (!data.open(o.in)) {
     std::fprintf(stderr, "%s\n", data.error().to_string().c_str());
     return kExitFailure;
@@ -81,7 +81,7 @@ int raw_to_dataset(const ConvertOptions& o, const drivers::Icm20948Config& cfg) 
     return kExitFailure;
   }
   if (!session.stop_message().empty()) std::fprintf(stderr, "sinu convert: note: %s\n", session.stop_message().c_str());
-  board::DatasetSink sink;
+  convert::DatasetSink sink;
   if (!sink.open(o.out)) {
     std::fprintf(stderr, "sinu convert: %s\n", sink.error().c_str());
     return kExitFailure;
@@ -130,4 +130,4 @@ void add_convert_command(CLI::App& app, Action& action) {
   cmd->callback([&action, opts] { action = [opts] { return convert(*opts); }; });
 }
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

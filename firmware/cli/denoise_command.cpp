@@ -21,10 +21,10 @@
 #include "estimator/wavelet/denoiser_select.hpp"
 #include "firmware/cli/command.hpp"
 #include "firmware/cli/exit_codes.hpp"
-#include "firmware/dataset/dataset_paths.hpp"
-#include "firmware/dataset/imu_csv.hpp"
+#include "firmware/host/dataset/dataset_paths.hpp"
+#include "firmware/host/dataset/imu_csv.hpp"
 
-namespace sinu::app {
+namespace sinu::cli {
 
 namespace {
 
@@ -37,7 +37,7 @@ struct DenoiseOptions {
   int levels = wv::kDefaultLevels;
 };
 
-constexpr std::size_t kFirstChannel = io::imu_col::ax;  // ax ay az gx gy gz
+constexpr std::size_t kFirstChannel = dataset::imu_col::ax;  // ax ay az gx gy gz
 constexpr std::size_t kChannels = 6;
 
 struct DenoiseStats {
@@ -49,17 +49,17 @@ struct DenoiseStats {
 
 /// Streams imu.csv through one denoiser per channel. False: error printed.
 template <class Denoiser>
-bool denoise_imu(io::CsvReader& reader, io::CsvWriter& writer, DenoiseStats& stats) {
+bool denoise_imu(dataset::CsvReader& reader, dataset::CsvWriter& writer, DenoiseStats& stats) {
   constexpr std::size_t kDelay = static_cast<std::size_t>(Denoiser::kDelay);
   stats.delay = Denoiser::kDelay;
   std::array<Denoiser, kChannels> filters;
   std::array<double, kChannels> last{};
-  std::vector<io::CsvRow> pending(kDelay + 1);  // rows waiting for their output
+  std::vector<dataset::CsvRow> pending(kDelay + 1);  // rows waiting for their output
   double first_dt = 0.0, prev_t = 0.0;
 
   // Feeds input i (a row, or the held last values when row is null) and
   // writes row i - delay if it exists.
-  auto feed = [&](std::size_t i, const io::CsvRow* row) {
+  auto feed = [&](std::size_t i, const dataset::CsvRow* row) {
     std::array<double, kChannels> y{};
     for (std::size_t c = 0; c < kChannels; ++c) {
       if (row && row->has(kFirstChannel + c)) {
@@ -71,7 +71,7 @@ bool denoise_imu(io::CsvReader& reader, io::CsvWriter& writer, DenoiseStats& sta
     }
     if (row) pending[i % (kDelay + 1)] = *row;
     if (i < kDelay) return true;
-    io::CsvRow& out = pending[(i - kDelay) % (kDelay + 1)];
+    dataset::CsvRow& out = pending[(i - kDelay) % (kDelay + 1)];
     for (std::size_t c = 0; c < kChannels; ++c) {
       if (out.has(kFirstChannel + c)) out.value[kFirstChannel + c] = y[c];
     }
@@ -82,14 +82,14 @@ bool denoise_imu(io::CsvReader& reader, io::CsvWriter& writer, DenoiseStats& sta
     return true;
   };
 
-  io::CsvRow row;
+  dataset::CsvRow row;
   for (;;) {
-    const io::ReadStatus status = reader.next(row);
-    if (status == io::ReadStatus::Error) {
+    const dataset::ReadStatus status = reader.next(row);
+    if (status == dataset::ReadStatus::Error) {
       std::fprintf(stderr, "%s\n", reader.error().to_string().c_str());
       return false;
     }
-    if (status == io::ReadStatus::End) break;
+    if (status == dataset::ReadStatus::End) break;
     const std::size_t i = stats.rows++;
     if (i == 0) {  // prime with the first sample: no start-up ramp
       for (std::size_t c = 0; c < kChannels; ++c) {
@@ -129,7 +129,7 @@ bool copy_other_files(const fs::path& in, const fs::path& out) {
 }
 
 int denoise(const DenoiseOptions& o) {
-  const io::DatasetPaths in{o.in}, out{o.out};
+  const dataset::DatasetPaths in{o.in}, out{o.out};
   std::error_code ec;
   if (!fs::is_directory(in.dir)) {
     std::fprintf(stderr, "sinu denoise: %s: not a dataset folder\n", o.in.c_str());
@@ -144,13 +144,13 @@ int denoise(const DenoiseOptions& o) {
     std::fprintf(stderr, "sinu denoise: --out must differ from --in (%s)\n", o.out.c_str());
     return kExitUsage;
   }
-  io::CsvReader reader(io::kImuSchema);
+  dataset::CsvReader reader(dataset::kImuSchema);
   if (!reader.open(in.imu())) {
     std::fprintf(stderr, "%s\n", reader.error().to_string().c_str());
     return kExitFailure;
   }
-  io::CsvWriter writer(io::kImuSchema);
-  io::set_imu_formats(writer);
+  dataset::CsvWriter writer(dataset::kImuSchema);
+  dataset::set_imu_formats(writer);
   if (!writer.open(out.imu())) {
     std::fprintf(stderr, "%s\n", writer.error().to_string().c_str());
     return kExitFailure;
@@ -199,4 +199,4 @@ void add_denoise_command(CLI::App& app, Action& action) {
   sub->callback([&action, opts] { action = [opts] { return denoise(*opts); }; });
 }
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

@@ -9,10 +9,10 @@
 #include "firmware/cli/command.hpp"
 #include "firmware/cli/exit_codes.hpp"
 #include "firmware/cli/navigation_options.hpp"
-#include "firmware/diagnose/diagnose_runner.hpp"
-#include "firmware/diagnose/diagnosis_report.hpp"
+#include "firmware/host/diagnose/diagnose_runner.hpp"
+#include "firmware/host/diagnose/diagnosis_report.hpp"
 
-namespace sinu::app {
+namespace sinu::cli {
 
 namespace {
 
@@ -25,24 +25,23 @@ constexpr const char* kDefaultCandidates =
 
 struct DiagnoseCliOptions {
   NavigationCliOptions nav{"gm", kDefaultBaseline};
-  diag::DiagnoseOptions opt;
+  diagnose::DiagnoseOptions opt;
   std::string candidates = kDefaultCandidates;
 };
 
 int run(DiagnoseCliOptions& c) {
   std::string error;
-  if (!c.nav.resolve(error) || !replay::parse_effects(c.candidates, c.opt.candidates, error)) {
+  if (!c.nav.resolve(error) || !board::parse_effects(c.candidates, c.opt.candidates, error)) {
     std::fprintf(stderr, "sinu diagnose: %s\n", error.c_str());
     return kExitUsage;
   }
   c.opt.replay = c.nav.opt;
-  const replay::ReplayOptions& r = c.opt.replay;
-  diag::Diagnosis d;
-  if (!diag::run_diagnosis(c.opt, d, error)) {
+  diagnose::Diagnosis d;
+  if (!diagnose::run_diagnosis(c.opt, d, error)) {
     std::fprintf(stderr, "sinu diagnose: %s\n", error.c_str());
     return kExitFailure;
   }
-  std::printf("%s  report: %s/report.md\n", diag::diagnosis_summary(c.opt, d).c_str(), r.out_dir.c_str());
+  std::printf("%s  report: %s/report.md\n", diagnose::diagnosis_summary(c.opt, d).c_str(), c.opt.out_dir.c_str());
   return kExitOk;
 }
 
@@ -56,9 +55,9 @@ void add_diagnose_command(CLI::App& app, Action& action) {
   sub->add_option("--rounds", c->opt.rounds, "How many effects to look for, one after the other")
       ->capture_default_str()
       ->check(CLI::Range(1, 5));
-  sub->add_option("--out", c->nav.opt.out_dir, "Output folder: report.md, diagnosis.json, one replay folder per run")
+  sub->add_option("--out", c->opt.out_dir, "Output folder: report.md, diagnosis.json and the baseline replay (baseline/)")
       ->required();
   sub->callback([&action, c] { action = [c] { return run(*c); }; });
 }
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

@@ -5,9 +5,9 @@
 
 #include "firmware/cli/command.hpp"
 #include "firmware/cli/exit_codes.hpp"
-#include "firmware/dataset/dataset_summary.hpp"
+#include "firmware/host/dataset/dataset_summary.hpp"
 
-namespace sinu::app {
+namespace sinu::cli {
 
 namespace {
 
@@ -17,13 +17,13 @@ struct InspectDatasetOptions {
 };
 
 int inspect_dataset(const InspectDatasetOptions& o) {
-  io::DatasetSummary summary;
-  io::Diagnostic err;
-  if (!io::summarize_dataset(io::DatasetPaths{o.dir}, summary, err)) {
+  dataset::DatasetSummary summary;
+  dataset::Diagnostic err;
+  if (!dataset::summarize_dataset(dataset::DatasetPaths{o.dir}, summary, err)) {
     std::fprintf(stderr, "%s\n", err.to_string().c_str());
     return kExitFailure;
   }
-  const std::string text = o.json ? io::format_summary_json(summary) : io::format_summary(summary);
+  const std::string text = o.json ? dataset::format_summary_json(summary) : dataset::format_summary(summary);
   std::fputs(text.c_str(), stdout);
   return kExitOk;
 }
@@ -43,4 +43,4 @@ void add_inspect_command(CLI::App& app, Action& action) {
   add_inspect_recording_command(*inspect, action);
 }
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

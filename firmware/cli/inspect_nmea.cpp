@@ -10,9 +10,9 @@
 #include "drivers/gps/nmea_stream.hpp"
 #include "firmware/cli/command.hpp"
 #include "firmware/cli/exit_codes.hpp"
-#include "firmware/dataset/nmea_log.hpp"
+#include "firmware/host/dataset/nmea_log.hpp"
 
-namespace sinu::app {
+namespace sinu::cli {
 
 namespace {
 
@@ -108,14 +108,14 @@ int inspect_nmea(const InspectNmeaOptions& o) {
   };
   nlohmann::json counters;
   if (looks_like_gps_nmea(o.file)) {
-    io::GpsLogReader reader;
+    dataset::GpsLogReader reader;
     if (!reader.open(o.file)) {
       std::fprintf(stderr, "%s\n", reader.error().to_string().c_str());
       return kExitFailure;
     }
-    io::ReadStatus s;
-    while ((s = reader.next(fix)) == io::ReadStatus::Row) emit(fix);
-    if (s == io::ReadStatus::Error) {
+    dataset::ReadStatus s;
+    while ((s = reader.next(fix)) == dataset::ReadStatus::Row) emit(fix);
+    if (s == dataset::ReadStatus::Error) {
       std::fprintf(stderr, "%s\n", reader.error().to_string().c_str());
       return kExitFailure;
     }
@@ -160,4 +160,4 @@ void add_inspect_nmea_command(CLI::App& inspect, Action& action) {
   cmd->callback([&action, opts] { action = [opts] { return inspect_nmea(*opts); }; });
 }
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

@@ -8,7 +8,7 @@
 #include "hal/i2c_bus.hpp"
 #include "hal/recording/recording_reader.hpp"
 
-namespace sinu::app {
+namespace sinu::cli {
 
 namespace {
 
@@ -77,4 +77,4 @@ void add_inspect_recording_command(CLI::App& inspect, Action& action) {
   cmd->callback([&action, file] { action = [file] { return inspect_recording(*file); }; });
 }
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

@@ -1,6 +1,6 @@
 #include "firmware/cli/navigation_options.hpp"
 
-namespace sinu::app {
+namespace sinu::cli {
 
 void NavigationCliOptions::add_to(CLI::App& sub) {
   sub.add_option("--in", opt.in_dir,
@@ -8,13 +8,13 @@ void NavigationCliOptions::add_to(CLI::App& sub) {
                  "replayed through the HAL and drivers")
       ->required();
   sub.add_option("--truth", opt.truth_path, "truth.csv to compare with (default: the dataset folder's, if any)");
-  sub.add_option("--calib", opt.calib_path,
+  sub.add_option("--calib", opt.unit.calib_path,
                  "calib.json from `sinu calibrate`; omitted: built-in defaults (README, 'sinu replay')");
   sub.add_option("--model", model, "Sensor-error model: gm (GM1, 15 states) or ar (AR(p), 9+6p states)")
       ->capture_default_str();
-  sub.add_option("--ar-method", opt.calib.ar_method, "AR estimator in calib.json: burg, yule_walker, covariance")
+  sub.add_option("--ar-method", opt.unit.calib.ar_method, "AR estimator in calib.json: burg, yule_walker, covariance")
       ->capture_default_str();
-  sub.add_option("--ar-order", opt.calib.ar_order, "AR order p (1..4)")->capture_default_str();
+  sub.add_option("--ar-order", opt.unit.calib.ar_order, "AR order p (1..4)")->capture_default_str();
   app = &sub;
   sub.add_option("--effects", effects,
                  "Effect states added to the defaults (accel_bias, gyro_bias, gps_position_bias, gps_latency; "
@@ -22,65 +22,65 @@ void NavigationCliOptions::add_to(CLI::App& sub) {
       ->capture_default_str();
   sub.add_option("--without-effects", without_effects,
                  "Default effect states to leave out (comma list, or none: no default effect)");
-  sub.add_option("--gps-latency", opt.gps_latency_s, "GPS latency: fix valid at arrival minus this [s]")
+  sub.add_option("--gps-latency", opt.unit.gps_latency_s, "GPS latency: fix valid at arrival minus this [s]")
       ->capture_default_str();
   sub.add_option("--lever-arm", lever_arm, "Antenna minus IMU in body FRD [m], x,y,z")->delimiter(',');
-  sub.add_option("--denoise", opt.denoise,
+  sub.add_option("--denoise", opt.unit.denoise,
                  "Wavelet denoiser in front of the INS: auto (calib.json's), none, or WAVELET:LEVELS (db4:3)")
       ->capture_default_str();
-  sub.add_option("--gate", opt.gate_sigma, "Innovation gate [sigma]")->capture_default_str();
-  sub.add_option("--gps-vel-sigma", opt.sigma.velocity_sigma_m_s,
+  sub.add_option("--gate", opt.unit.gate_sigma, "Innovation gate [sigma]")->capture_default_str();
+  sub.add_option("--gps-vel-sigma", opt.unit.sigma.velocity_sigma_m_s,
                  "GNSS velocity noise per axis, 1 sigma [m/s] (NMEA carries none); given: kept fixed, else "
                  "learnt from the innovations starting here")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  sub.add_option("--mag-sigma", opt.mag_sigma_uT,
+  sub.add_option("--mag-sigma", opt.unit.mag_sigma_uT,
                  "Magnetometer noise per axis, 1 sigma [uT]; given: kept fixed, else learnt from the innovations")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  sub.add_option("--mag-declination", opt.mag_declination_deg,
+  sub.add_option("--mag-declination", opt.unit.mag_declination_deg,
                  "Site's magnetic declination [deg, east +]: align heading with the magnetometer at rest "
                  "(default: from the GNSS course once moving)");
   sub.add_option("--vehicle", vehicle,
                  "What carries the unit: air (UAV, default) or ground (a car: no sideways or vertical velocity in "
                  "the body frame, the non-holonomic constraint)")
       ->capture_default_str();
-  sub.add_flag("--no-mag", [this](std::int64_t) { opt.use_mag = false; },
+  sub.add_flag("--no-mag", [this](std::int64_t) { opt.unit.use_mag = false; },
                "Do not fuse the magnetometer even when imu.csv has one");
   imu.add_to(sub);
 }
 
 bool NavigationCliOptions::resolve(std::string& error) {
   if (model == "gm") {
-    opt.calib.kind = est::NoiseModelKind::GaussMarkov;
+    opt.unit.calib.kind = est::NoiseModelKind::GaussMarkov;
   } else if (model == "ar") {
-    opt.calib.kind = est::NoiseModelKind::AutoRegressive;
+    opt.unit.calib.kind = est::NoiseModelKind::AutoRegressive;
   } else {
     error = "--model must be gm or ar, not '" + model + "'";
     return false;
   }
-  if (!replay::resolve_effects(effects, without_effects, opt.effects, error)) return false;
+  if (!board::resolve_effects(effects, without_effects, opt.unit.effects, error)) return false;
   if (vehicle == "air") {
-    opt.vehicle = est::VehicleKind::Air;
+    opt.unit.vehicle = est::VehicleKind::Air;
   } else if (vehicle == "ground") {
-    opt.vehicle = est::VehicleKind::Ground;
+    opt.unit.vehicle = est::VehicleKind::Ground;
   } else {
     error = "--vehicle must be air or ground, not '" + vehicle + "'";
     return false;
   }
   // A dataset's full scales only when given (a recording's come from its driver settings).
-  if (app && app->count("--gps-vel-sigma")) opt.adapt_velocity_noise = false;
-  if (app && app->count("--mag-sigma")) opt.adapt_mag_noise = false;
-  if (app && app->count("--accel-range")) opt.accel_range_m_s2 = imu.accel_g * 9.80665;
-  if (app && app->count("--gyro-range")) opt.gyro_range_rad_s = imu.gyro_dps * 3.14159265358979323846 / 180.0;
+  if (app && app->count("--gps-vel-sigma")) opt.unit.adapt_velocity_noise = false;
+  if (app && app->count("--mag-sigma")) opt.unit.adapt_mag_noise = false;
+  if (app && app->count("--accel-range")) opt.unit.accel_range_m_s2 = imu.accel_g * 9.80665;
+  if (app && app->count("--gyro-range")) opt.unit.gyro_range_rad_s = imu.gyro_dps * 3.14159265358979323846 / 180.0;
   if (!lever_arm.empty()) {
     if (lever_arm.size() != 3) {
       error = "--lever-arm needs three numbers x,y,z [m]";
       return false;
     }
-    opt.lever_arm_b_m = {lever_arm[0], lever_arm[1], lever_arm[2]};
+    opt.unit.lever_arm_b_m = {lever_arm[0], lever_arm[1], lever_arm[2]};
   }
   return imu.to_config(opt.imu, error);
 }
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "firmware/cli/board_options.hpp"
-#include "firmware/replay/replay_options.hpp"
+#include "firmware/host/replay/replay_options.hpp"
 
-namespace sinu::app {
+namespace sinu::cli {
 
 struct NavigationCliOptions {
   replay::ReplayOptions opt;
@@ -31,4 +31,4 @@ struct NavigationCliOptions {
   bool resolve(std::string& error);
 };
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

@@ -12,7 +12,7 @@
 #include "firmware/cli/command.hpp"
 #include "firmware/cli/exit_codes.hpp"
 
-namespace sinu::app {
+namespace sinu::cli {
 
 namespace {
 
@@ -113,4 +113,4 @@ void add_fly_command(CLI::App& app, Action& action) {
   cmd->callback([&action, opts] { action = [opts] { return run_board(*opts); }; });
 }
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

@@ -10,9 +10,9 @@
 
 #include "firmware/cli/command.hpp"
 #include "firmware/cli/exit_codes.hpp"
-#include "firmware/sim/simulation.hpp"
+#include "firmware/host/sim/simulation.hpp"
 
-namespace sinu::app {
+namespace sinu::cli {
 
 namespace {
 
@@ -44,7 +44,7 @@ int simulate(SimulateCli c) {
     std::fprintf(stderr, "sinu simulate: %s\n", why.c_str());
     return kExitUsage;
   }
-  io::Diagnostic err;
+  dataset::Diagnostic err;
   if (!c.effects_file.empty()) {
     if (!std::filesystem::exists(c.effects_file)) {
       std::fprintf(stderr, "sinu simulate: %s: effects file does not exist\n", c.effects_file.c_str());
@@ -119,4 +119,4 @@ void add_simulate_command(CLI::App& app, Action& action) {
   add_mode(*simulate, action, sim::SimMode::Static);
 }
 
-}  // namespace sinu::app
+}  // namespace sinu::cli

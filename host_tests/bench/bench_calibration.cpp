@@ -6,14 +6,14 @@
 
 #include <random>
 
-#include "firmware/calibration/calibration_run.hpp"
+#include "firmware/host/calibration/calibration_run.hpp"
 
 namespace {
 
-sinu::calib::StaticSession make_session() {
+sinu::calibration::StaticSession make_session() {
   constexpr double kRateHz = 40.0;
   constexpr std::size_t kSamples = static_cast<std::size_t>(8 * 3600 * kRateHz);
-  sinu::calib::StaticSession s;
+  sinu::calibration::StaticSession s;
   s.dataset = "synthetic";
   s.dt_s = 1.0 / kRateHz;
   s.duration_s = static_cast<double>(kSamples - 1) * s.dt_s;
@@ -36,15 +36,15 @@ sinu::calib::StaticSession make_session() {
 }
 
 void BM_Calibrate8h40Hz6Axis(benchmark::State& state) {
-  const sinu::calib::StaticSession session = make_session();
-  sinu::calib::Denoiser denoiser;
+  const sinu::calibration::StaticSession session = make_session();
+  sinu::calibration::Denoiser denoiser;
   std::string why;
-  if (!sinu::calib::make_wavelet_denoiser("db4", 3, denoiser, why)) {
+  if (!sinu::calibration::make_wavelet_denoiser("db4", 3, denoiser, why)) {
     state.SkipWithError(why.c_str());
     return;
   }
   for (auto _ : state) {
-    auto result = sinu::calib::calibrate_session(session, denoiser, sinu::calib::ModelChoice{});
+    auto result = sinu::calibration::calibrate_session(session, denoiser, sinu::calibration::ModelChoice{});
     benchmark::DoNotOptimize(result);
   }
 }

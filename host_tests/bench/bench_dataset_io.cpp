@@ -2,11 +2,11 @@
 // 40 Hz data). Report: rows/s in the "items_per_second" column.
 #include <benchmark/benchmark.h>
 
-#include "firmware/dataset/csv_table.hpp"
-#include "firmware/dataset/imu_csv.hpp"
+#include "firmware/host/dataset/csv_table.hpp"
+#include "firmware/host/dataset/imu_csv.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
-using namespace sinu::io;
+using namespace sinu::dataset;
 
 namespace {
 

@@ -6,10 +6,10 @@
 // items_per_second = IMU samples per second.
 #include <benchmark/benchmark.h>
 
-#include "firmware/calibration/calib_json.hpp"
-#include "firmware/calibration/calibration_run.hpp"
-#include "firmware/replay/replay_runner.hpp"
-#include "firmware/sim/simulation.hpp"
+#include "firmware/host/calibration/calib_json.hpp"
+#include "firmware/host/calibration/calibration_run.hpp"
+#include "firmware/host/replay/replay_files.hpp"
+#include "firmware/host/sim/simulation.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
 namespace {
@@ -21,7 +21,7 @@ struct Flight {
     sinu::sim::SimOptions o;
     o.seed = 11;
     sinu::sim::SimResult r;
-    sinu::io::Diagnostic err;
+    sinu::dataset::Diagnostic err;
     o.mode = sinu::sim::SimMode::Flight;
     o.duration_s = 3000.0;
     o.out_dir = dataset = (dir.path() / "flight").string();
@@ -30,14 +30,14 @@ struct Flight {
     o.duration_s = 3600.0;
     o.out_dir = (dir.path() / "bench").string();
     sinu::sim::run_simulation(o, r, err);
-    sinu::calib::StaticSession session;
-    sinu::calib::load_static_session(o.out_dir, session, err);
-    sinu::calib::CalibrationRun run;
+    sinu::calibration::StaticSession session;
+    sinu::calibration::load_static_session(o.out_dir, session, err);
+    sinu::calibration::CalibrationRun run;
     std::string why;
-    sinu::calib::make_wavelet_denoiser("db4", 3, run.denoiser, why);
-    run.sessions.push_back(sinu::calib::calibrate_session(session, run.denoiser, sinu::calib::ModelChoice{}));
+    sinu::calibration::make_wavelet_denoiser("db4", 3, run.denoiser, why);
+    run.sessions.push_back(sinu::calibration::calibrate_session(session, run.denoiser, sinu::calibration::ModelChoice{}));
     calib = (dir.path() / "calib.json").string();
-    sinu::calib::write_calib_json(run, calib, why);
+    sinu::calibration::write_calib_json(run, calib, why);
   }
 };
 
@@ -52,17 +52,16 @@ void replay(benchmark::State& state, sinu::est::NoiseModelKind kind, bool full) 
   const Flight& f = flight();
   sinu::replay::ReplayOptions opt;
   opt.in_dir = f.dataset;
-  opt.calib_path = f.calib;
-  opt.out_dir = (f.dir.path() / "out").string();
-  opt.calib.kind = kind;
-  opt.quiet = true;
-  opt.use_mag = full;
-  if (!full) opt.effects = {};
+  opt.unit.calib_path = f.calib;
+    const std::string out_dir = (f.dir.path() / "out").string();
+  opt.unit.calib.kind = kind;
+  opt.unit.use_mag = full;
+  if (!full) opt.unit.effects = {};
   std::uint64_t samples = 0;
   for (auto _ : state) {
-    sinu::replay::ReplayTotals totals;
+    sinu::replay::ReplayResult totals;
     std::string error;
-    if (!sinu::replay::run_replay(opt, totals, error)) state.SkipWithError(error.c_str());
+    if (!sinu::replay::replay_to_folder(opt, out_dir, 10.0, totals, error)) state.SkipWithError(error.c_str());
     samples += totals.imu_samples;
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(samples));

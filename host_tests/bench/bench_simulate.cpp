@@ -4,7 +4,7 @@
 // Report: wall time per session; items_per_second = IMU rows per second.
 #include <benchmark/benchmark.h>
 
-#include "firmware/sim/simulation.hpp"
+#include "firmware/host/sim/simulation.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
 namespace {
@@ -19,7 +19,7 @@ void simulate(benchmark::State& state, sinu::sim::SimMode mode, double duration_
   std::uint64_t rows = 0;
   for (auto _ : state) {
     sinu::sim::SimResult r;
-    sinu::io::Diagnostic err;
+    sinu::dataset::Diagnostic err;
     if (!sinu::sim::run_simulation(o, r, err)) state.SkipWithError(err.to_string().c_str());
     rows += r.imu_rows;
   }

@@ -67,8 +67,8 @@ TEST(FlyConfig, ShippedFileShowsEveryKey) {
 
 TEST(FlyConfig, DefaultsAreTheCommandLines) {
   const FlyConfig c;
-  const sinu::app::ImuOptions imu;
-  const sinu::app::DeviceOptions dev;
+  const sinu::cli::ImuOptions imu;
+  const sinu::cli::DeviceOptions dev;
   EXPECT_EQ(c.imu.i2c, dev.i2c);
   EXPECT_EQ(c.imu.address, sinu::drivers::Icm20948Config{}.address);  // fly has no address option: the driver's
   EXPECT_EQ(c.imu.drdy_chip, dev.gpio_chip);

@@ -11,8 +11,8 @@
 
 #include "drivers/imu/emulated_icm20948.hpp"
 #include "firmware/board/board_loop.hpp"
-#include "firmware/board/dataset_devices.hpp"
-#include "firmware/board/dataset_sink.hpp"
+#include "firmware/host/convert/dataset_devices.hpp"
+#include "firmware/host/convert/dataset_sink.hpp"
 #include "hal/recording/recording_taps.hpp"
 #include "hal/replay/replay_devices.hpp"
 #include "host_tests/support/nmea_text.hpp"

@@ -6,13 +6,13 @@
 #include <numbers>
 #include <random>
 
-#include "firmware/calibration/axis_calibration.hpp"
-#include "firmware/calibration/calibration_run.hpp"
-#include "firmware/calibration/denoiser.hpp"
+#include "firmware/host/calibration/axis_calibration.hpp"
+#include "firmware/host/calibration/calibration_run.hpp"
+#include "firmware/host/calibration/denoiser.hpp"
 
 namespace {
 
-using namespace sinu::calib;
+using namespace sinu::calibration;
 
 TEST(DenoiserAdapter, KeepsLengthAndRemovesTheFilterDelay) {
   Denoiser d;

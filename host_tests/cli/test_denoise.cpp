@@ -10,13 +10,13 @@
 #include <string>
 #include <vector>
 
-#include "firmware/dataset/imu_csv.hpp"
+#include "firmware/host/dataset/imu_csv.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
 using sinu::test::read_file;
 using sinu::test::run_sinu;
-namespace col = sinu::io::imu_col;
+namespace col = sinu::dataset::imu_col;
 
 namespace {
 
@@ -42,12 +42,12 @@ std::string make_imu(std::size_t rows) {
   return s.str();
 }
 
-std::vector<sinu::io::CsvRow> read_imu(const std::string& path) {
-  sinu::io::CsvReader reader(sinu::io::kImuSchema);
+std::vector<sinu::dataset::CsvRow> read_imu(const std::string& path) {
+  sinu::dataset::CsvReader reader(sinu::dataset::kImuSchema);
   EXPECT_TRUE(reader.open(path)) << reader.error().to_string();
-  std::vector<sinu::io::CsvRow> rows;
-  sinu::io::CsvRow row;
-  while (reader.next(row) == sinu::io::ReadStatus::Row) rows.push_back(row);
+  std::vector<sinu::dataset::CsvRow> rows;
+  sinu::dataset::CsvRow row;
+  while (reader.next(row) == sinu::dataset::ReadStatus::Row) rows.push_back(row);
   EXPECT_EQ(reader.error().message, "");
   return rows;
 }

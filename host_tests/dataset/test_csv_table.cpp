@@ -6,12 +6,12 @@
 #include <random>
 #include <string>
 
-#include "firmware/dataset/csv_table.hpp"
-#include "firmware/dataset/imu_csv.hpp"
-#include "firmware/dataset/truth_csv.hpp"
+#include "firmware/host/dataset/csv_table.hpp"
+#include "firmware/host/dataset/imu_csv.hpp"
+#include "firmware/host/dataset/truth_csv.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
-using namespace sinu::io;
+using namespace sinu::dataset;
 
 namespace {
 

@@ -3,12 +3,12 @@
 // whatever the file length.
 #include <gtest/gtest.h>
 
-#include "firmware/dataset/csv_table.hpp"
-#include "firmware/dataset/imu_csv.hpp"
+#include "firmware/host/dataset/csv_table.hpp"
+#include "firmware/host/dataset/imu_csv.hpp"
 #include "host_tests/support/alloc_counter.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
-using namespace sinu::io;
+using namespace sinu::dataset;
 
 namespace {
 

@@ -3,10 +3,10 @@
 
 #include <string>
 
-#include "firmware/dataset/line_reader.hpp"
+#include "firmware/host/dataset/line_reader.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
-using sinu::io::LineReader;
+using sinu::dataset::LineReader;
 
 TEST(LineReader, AcceptsLfAndCrLfAndAMissingFinalNewline) {
   sinu::test::TempDir dir;

@@ -1,10 +1,10 @@
 // gps.nmea: corrupt lines are counted and skipped, never stop the reader.
 #include <gtest/gtest.h>
 
-#include "firmware/dataset/nmea_log.hpp"
+#include "firmware/host/dataset/nmea_log.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
-using namespace sinu::io;
+using namespace sinu::dataset;
 
 namespace {
 const char* kGga0 = "$GNGGA,193400.50,4005.7976080,N,10508.8468980,W,4,21,,1601.474,M,-21.387,M,,*58";

@@ -3,10 +3,10 @@
 // its header, and 3 sentences (GGA, RMC, GST) per epoch as meta.json states.
 #include <gtest/gtest.h>
 
-#include "firmware/dataset/dataset_summary.hpp"
+#include "firmware/host/dataset/dataset_summary.hpp"
 #include "host_tests/support/shared_data.hpp"
 
-using namespace sinu::io;
+using namespace sinu::dataset;
 
 TEST(RealDrive0708, ReadsCompletelyWithExpectedCounts) {
   SINU_REQUIRE_SHARED(dir, "data/real/drive_0708");

@@ -9,7 +9,7 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
-#include "firmware/replay/replay_runner.hpp"
+#include "firmware/host/replay/replay_files.hpp"
 #include "host_tests/support/alloc_counter.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/temp_dir.hpp"
@@ -195,15 +195,14 @@ TEST(ReplayAlloc, AllocationCountDoesNotGrowWithFlightLength) {
     const std::string ds = simulate(dir, kNames[i][0], seconds[i]);
     replay::ReplayOptions opt;
     opt.in_dir = ds;
-    opt.out_dir = (dir.path() / kNames[i][1]).string();
-    opt.calib.kind = est::NoiseModelKind::AutoRegressive;
-    opt.gps_latency_s = 0.045;
+    const std::string out_dir = (dir.path() / kNames[i][1]).string();
+    opt.unit.calib.kind = est::NoiseModelKind::AutoRegressive;
+    opt.unit.gps_latency_s = 0.045;
     opt.outages = {{first_t(ds) + 200.0, 20.0}};
-    opt.quiet = true;
-    replay::ReplayTotals totals;
+    replay::ReplayResult totals;
     std::string error;
     AllocationScope scope;
-    ASSERT_TRUE(replay::run_replay(opt, totals, error)) << error;
+    ASSERT_TRUE(replay::replay_to_folder(opt, out_dir, 10.0, totals, error)) << error;
     counts[i] = scope.count();
     EXPECT_TRUE(totals.aligned);
   }

@@ -13,7 +13,7 @@
 #include <sstream>
 #include <vector>
 
-#include "firmware/replay/replay_runner.hpp"
+#include "firmware/host/replay/replay_files.hpp"
 #include "host_tests/support/alloc_counter.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/shared_data.hpp"
@@ -233,13 +233,12 @@ TEST(ReplayRecordingAlloc, AllocationCountDoesNotGrowWithFlightLength) {
     const Flight f = make_flight(sub, seconds[i], 5);
     replay::ReplayOptions opt;
     opt.in_dir = f.raw;
-    opt.out_dir = sub.file("out");
-    opt.calib.kind = est::NoiseModelKind::AutoRegressive;
-    opt.quiet = true;
-    replay::ReplayTotals totals;
+    const std::string out_dir = sub.file("out");
+    opt.unit.calib.kind = est::NoiseModelKind::AutoRegressive;
+    replay::ReplayResult totals;
     std::string error;
     AllocationScope scope;
-    ASSERT_TRUE(replay::run_replay(opt, totals, error)) << error;
+    ASSERT_TRUE(replay::replay_to_folder(opt, out_dir, 10.0, totals, error)) << error;
     counts[i] = scope.count();
     EXPECT_TRUE(totals.aligned);
     EXPECT_EQ(totals.note, "");

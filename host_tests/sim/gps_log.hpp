@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "drivers/gps/nmea_parser.hpp"
-#include "firmware/dataset/nmea_log.hpp"
+#include "firmware/host/dataset/nmea_log.hpp"
 
 namespace sinu::test {
 
@@ -20,11 +20,11 @@ struct GpsLine {
 
 inline std::vector<GpsLine> read_gps_log(const std::string& path) {
   std::vector<GpsLine> out;
-  io::NmeaLogReader log;
+  dataset::NmeaLogReader log;
   EXPECT_TRUE(log.open(path)) << log.error().to_string();
   drivers::NmeaParser parser;
-  io::NmeaLogLine line;
-  while (log.next(line) == io::ReadStatus::Row) {
+  dataset::NmeaLogLine line;
+  while (log.next(line) == dataset::ReadStatus::Row) {
     GpsLine g;
     g.arrival_s = line.arrival_s;
     g.sentence = std::string(line.sentence);

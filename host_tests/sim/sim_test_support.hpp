@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "firmware/dataset/csv_table.hpp"
-#include "firmware/dataset/imu_csv.hpp"
-#include "firmware/dataset/truth_csv.hpp"
-#include "firmware/sim/simulation.hpp"
+#include "firmware/host/dataset/csv_table.hpp"
+#include "firmware/host/dataset/imu_csv.hpp"
+#include "firmware/host/dataset/truth_csv.hpp"
+#include "firmware/host/sim/simulation.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
 namespace sinu::test {
@@ -23,14 +23,14 @@ namespace sinu::test {
 inline constexpr double kDeg = std::numbers::pi / 180.0;
 
 /// All rows of a CSV file (the test fails on any read error).
-inline std::vector<io::CsvRow> load_rows(const std::string& path, const io::CsvSchema& schema) {
-  io::CsvReader reader(schema);
-  std::vector<io::CsvRow> rows;
+inline std::vector<dataset::CsvRow> load_rows(const std::string& path, const dataset::CsvSchema& schema) {
+  dataset::CsvReader reader(schema);
+  std::vector<dataset::CsvRow> rows;
   EXPECT_TRUE(reader.open(path)) << reader.error().to_string();
-  io::CsvRow row;
-  io::ReadStatus s;
-  while ((s = reader.next(row)) == io::ReadStatus::Row) rows.push_back(row);
-  EXPECT_EQ(s, io::ReadStatus::End) << reader.error().to_string();
+  dataset::CsvRow row;
+  dataset::ReadStatus s;
+  while ((s = reader.next(row)) == dataset::ReadStatus::Row) rows.push_back(row);
+  EXPECT_EQ(s, dataset::ReadStatus::End) << reader.error().to_string();
   return rows;
 }
 
@@ -39,13 +39,13 @@ struct SimRun {
   TempDir dir;
   sim::SimResult result;
   std::string path(const char* file) const { return dir.file(file); }
-  std::vector<io::CsvRow> imu() const { return load_rows(path("imu.csv"), io::kImuSchema); }
-  std::vector<io::CsvRow> truth() const { return load_rows(path("truth.csv"), io::kTruthSchema); }
+  std::vector<dataset::CsvRow> imu() const { return load_rows(path("imu.csv"), dataset::kImuSchema); }
+  std::vector<dataset::CsvRow> truth() const { return load_rows(path("truth.csv"), dataset::kTruthSchema); }
 };
 
 inline void run(SimRun& r, sim::SimOptions o) {
   o.out_dir = r.dir.path().string();
-  io::Diagnostic err;
+  dataset::Diagnostic err;
   ASSERT_TRUE(sim::run_simulation(o, r.result, err)) << err.to_string();
 }
 
@@ -98,13 +98,13 @@ inline Eigen::Matrix3d C_nb(double roll, double pitch, double yaw) {
       -sp, sr * cp, cr * cp;
   return c;
 }
-inline Eigen::Matrix3d C_nb_of(const io::CsvRow& truth) {
-  using namespace io::truth_col;
+inline Eigen::Matrix3d C_nb_of(const dataset::CsvRow& truth) {
+  using namespace dataset::truth_col;
   return C_nb(truth.value[roll] * kDeg, truth.value[pitch] * kDeg, truth.value[yaw] * kDeg);
 }
 }  // namespace ref
 
-inline Eigen::Vector3d triple(const io::CsvRow& r, std::size_t first) {
+inline Eigen::Vector3d triple(const dataset::CsvRow& r, std::size_t first) {
   return {r.value[first], r.value[first + 1], r.value[first + 2]};
 }
 

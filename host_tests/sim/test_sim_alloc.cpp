@@ -2,7 +2,7 @@
 // a session twice as long makes exactly as many allocations.
 #include <gtest/gtest.h>
 
-#include "firmware/sim/simulation.hpp"
+#include "firmware/host/sim/simulation.hpp"
 #include "host_tests/support/alloc_counter.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
@@ -16,7 +16,7 @@ std::uint64_t allocations_for(sinu::sim::SimMode mode, double duration_s) {
   o.duration_s = duration_s;
   o.out_dir = dir.path().string();
   sinu::sim::SimResult r;
-  sinu::io::Diagnostic err;
+  sinu::dataset::Diagnostic err;
   sinu::test::AllocationScope scope;
   EXPECT_TRUE(sinu::sim::run_simulation(o, r, err)) << err.to_string();
   return scope.count();

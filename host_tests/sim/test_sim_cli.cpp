@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "firmware/sim/effects.hpp"
+#include "firmware/host/sim/effects.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
@@ -142,7 +142,7 @@ TEST(SimulateEffects, JsonRoundTripAndRandomDrawsAreDistinct) {
   const auto fx = sinu::sim::draw_random_effects(11, rng);
   EXPECT_EQ(fx.count(), 11u);
   sinu::sim::Effects back;
-  sinu::io::Diagnostic err;
+  sinu::dataset::Diagnostic err;
   ASSERT_TRUE(sinu::sim::parse_effects(sinu::sim::effects_to_json(fx), "mem", back, err)) << err.to_string();
   EXPECT_EQ(sinu::sim::effects_to_json(back), sinu::sim::effects_to_json(fx));
   for (std::size_t k = 0; k <= 11; ++k) {

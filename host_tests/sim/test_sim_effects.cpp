@@ -12,8 +12,8 @@
 
 using namespace sinu;
 using namespace sinu::test;
-namespace tc = io::truth_col;
-namespace ic = io::imu_col;
+namespace tc = dataset::truth_col;
+namespace ic = dataset::imu_col;
 
 namespace {
 
@@ -36,7 +36,7 @@ class Effects : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     base_ = flight_with({}).release();
-    base_imu_ = new std::vector<io::CsvRow>(base_->imu());
+    base_imu_ = new std::vector<dataset::CsvRow>(base_->imu());
   }
   static void TearDownTestSuite() {
     delete base_imu_;
@@ -45,7 +45,7 @@ class Effects : public ::testing::Test {
 
   // For every row: `check(base_row, effect_row)`; also the rows share t.
   static void compare_imu(const sim::Effects& fx,
-                          const std::function<void(const io::CsvRow&, const io::CsvRow&)>& check) {
+                          const std::function<void(const dataset::CsvRow&, const dataset::CsvRow&)>& check) {
     const auto r = flight_with(fx);
     const auto rows = r->imu();
     ASSERT_EQ(rows.size(), base_imu_->size());
@@ -71,16 +71,16 @@ class Effects : public ::testing::Test {
   }
 
   static SimRun* base_;
-  static std::vector<io::CsvRow>* base_imu_;
+  static std::vector<dataset::CsvRow>* base_imu_;
 };
 SimRun* Effects::base_ = nullptr;
-std::vector<io::CsvRow>* Effects::base_imu_ = nullptr;
+std::vector<dataset::CsvRow>* Effects::base_imu_ = nullptr;
 
 }  // namespace
 
 TEST_F(Effects, AccelScaleMultipliesEachAxis) {
   const Eigen::Vector3d ppm(8000, -5000, 3000);
-  compare_imu({.accel_scale_ppm = ppm}, [&](const io::CsvRow& b, const io::CsvRow& e) {
+  compare_imu({.accel_scale_ppm = ppm}, [&](const dataset::CsvRow& b, const dataset::CsvRow& e) {
     expect_map(triple(e, ic::ax), (Eigen::Vector3d::Ones() + 1e-6 * ppm).asDiagonal().toDenseMatrix(), triple(b, ic::ax));
     expect_same(triple(e, ic::gx), triple(b, ic::gx));  // gyro untouched
   });
@@ -88,7 +88,7 @@ TEST_F(Effects, AccelScaleMultipliesEachAxis) {
 
 TEST_F(Effects, GyroScaleMultipliesEachAxis) {
   const Eigen::Vector3d ppm(-20000, 15000, 10000);
-  compare_imu({.gyro_scale_ppm = ppm}, [&](const io::CsvRow& b, const io::CsvRow& e) {
+  compare_imu({.gyro_scale_ppm = ppm}, [&](const dataset::CsvRow& b, const dataset::CsvRow& e) {
     expect_map(triple(e, ic::gx), (Eigen::Vector3d::Ones() + 1e-6 * ppm).asDiagonal().toDenseMatrix(), triple(b, ic::gx));
     expect_same(triple(e, ic::ax), triple(b, ic::ax));
   });
@@ -97,7 +97,7 @@ TEST_F(Effects, GyroScaleMultipliesEachAxis) {
 TEST_F(Effects, AccelMisalignmentMixesAxes) {
   Eigen::Matrix3d M;
   M << 0, 0.01, -0.008, 0.006, 0, 0.012, -0.01, 0.007, 0;
-  compare_imu({.accel_misalign_rad = M}, [&](const io::CsvRow& b, const io::CsvRow& e) {
+  compare_imu({.accel_misalign_rad = M}, [&](const dataset::CsvRow& b, const dataset::CsvRow& e) {
     // Level flight: ax and ay pick up ~1 % of the 9.8 m/s^2 on z.
     expect_map(triple(e, ic::ax), Eigen::Matrix3d::Identity() + M, triple(b, ic::ax));
   });
@@ -106,7 +106,7 @@ TEST_F(Effects, AccelMisalignmentMixesAxes) {
 TEST_F(Effects, GyroMisalignmentMixesAxes) {
   Eigen::Matrix3d M;
   M << 0, -0.01, 0.009, 0.011, 0, -0.006, 0.008, 0.013, 0;
-  compare_imu({.gyro_misalign_rad = M}, [&](const io::CsvRow& b, const io::CsvRow& e) {
+  compare_imu({.gyro_misalign_rad = M}, [&](const dataset::CsvRow& b, const dataset::CsvRow& e) {
     expect_map(triple(e, ic::gx), Eigen::Matrix3d::Identity() + M, triple(b, ic::gx));
   });
 }
@@ -115,7 +115,7 @@ TEST_F(Effects, TemperatureBiasesFollowTheDieTemperature) {
   const Eigen::Vector3d ka(5e-3, -4e-3, 6e-3), kg(3e-4, -2e-4, 4e-4);
   double t_min = 1e9, t_max = -1e9;
   compare_imu({.accel_temp_bias_m_s2_per_degC = ka, .gyro_temp_bias_rad_s_per_degC = kg},
-              [&](const io::CsvRow& b, const io::CsvRow& e) {
+              [&](const dataset::CsvRow& b, const dataset::CsvRow& e) {
                 const double dT = e.value[ic::temp] - sim::kTempBiasReference_degC;
                 t_min = std::min(t_min, e.value[ic::temp]);
                 t_max = std::max(t_max, e.value[ic::temp]);
@@ -133,10 +133,10 @@ TEST_F(Effects, MagneticHardAndSoftIron) {
   const Eigen::Vector3d hard(12.0, -20.0, 8.0);
   Eigen::Matrix3d soft;
   soft << 1.08, 0.03, -0.02, 0.03, 0.93, 0.05, -0.02, 0.05, 1.11;
-  compare_imu({.mag_hard_iron_uT = hard}, [&](const io::CsvRow& b, const io::CsvRow& e) {
+  compare_imu({.mag_hard_iron_uT = hard}, [&](const dataset::CsvRow& b, const dataset::CsvRow& e) {
     expect_map(triple(e, ic::mx), Eigen::Matrix3d::Identity(), triple(b, ic::mx), hard);
   });
-  compare_imu({.mag_soft_iron = soft}, [&](const io::CsvRow& b, const io::CsvRow& e) {
+  compare_imu({.mag_soft_iron = soft}, [&](const dataset::CsvRow& b, const dataset::CsvRow& e) {
     expect_map(triple(e, ic::mx), soft, triple(b, ic::mx));
   });
 }
@@ -144,7 +144,7 @@ TEST_F(Effects, MagneticHardAndSoftIron) {
 TEST_F(Effects, GyroGSensitivityAddsRatePerSpecificForce) {
   Eigen::Matrix3d G;
   G << 2e-4, 5e-5, -4e-5, -6e-5, 2.5e-4, 3e-5, 4e-5, -5e-5, -1.8e-4;
-  compare_imu({.gyro_g_sensitivity_rad_s_per_m_s2 = G}, [&](const io::CsvRow& b, const io::CsvRow& e) {
+  compare_imu({.gyro_g_sensitivity_rad_s_per_m_s2 = G}, [&](const dataset::CsvRow& b, const dataset::CsvRow& e) {
     // The effect uses the true specific force; the baseline's printed one
     // differs by its rounding, which G (1e-4) scales far below the tolerance.
     expect_map(triple(e, ic::gx), Eigen::Matrix3d::Identity(), triple(b, ic::gx), G * triple(b, ic::ax));
@@ -169,7 +169,7 @@ std::vector<GgaPoint> gga_points(const SimRun& r) {
 }
 
 // NED vector from truth row position to a geodetic point.
-Eigen::Vector3d ned_from(const io::CsvRow& r, double lat, double lon, double h) {
+Eigen::Vector3d ned_from(const dataset::CsvRow& r, double lat, double lon, double h) {
   const double lat0 = r.value[tc::lat] * kDeg, h0 = r.value[tc::h];
   return {(lat - lat0) * (ref::r_meridian(lat0) + h0),
           std::remainder(lon - r.value[tc::lon] * kDeg, 2 * std::numbers::pi) * (ref::r_transverse(lat0) + h0) *
@@ -177,7 +177,7 @@ Eigen::Vector3d ned_from(const io::CsvRow& r, double lat, double lon, double h) 
           -(h - h0)};
 }
 
-std::size_t row_at(const std::vector<io::CsvRow>& truth, double t) {
+std::size_t row_at(const std::vector<dataset::CsvRow>& truth, double t) {
   return static_cast<std::size_t>(std::llround((t - truth.front().t()) * 40.0));
 }
 

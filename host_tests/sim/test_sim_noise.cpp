@@ -7,9 +7,9 @@
 #include <numbers>
 #include <vector>
 
-#include "firmware/sim/error_processes.hpp"
-#include "firmware/sim/imu_error_model.hpp"
-#include "firmware/sim/rng.hpp"
+#include "firmware/host/sim/error_processes.hpp"
+#include "firmware/host/sim/imu_error_model.hpp"
+#include "firmware/host/sim/rng.hpp"
 
 using namespace sinu::sim;
 

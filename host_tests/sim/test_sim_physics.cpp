@@ -9,8 +9,8 @@
 
 using namespace sinu;
 using namespace sinu::test;
-namespace tc = io::truth_col;
-namespace ic = io::imu_col;
+namespace tc = dataset::truth_col;
+namespace ic = dataset::imu_col;
 
 namespace {
 
@@ -21,15 +21,15 @@ struct Terms {
 };
 
 // 5-point central difference of column `col` at row k (error O(dt^4)).
-double derivative(const std::vector<io::CsvRow>& r, std::size_t k, std::size_t col, double dt) {
+double derivative(const std::vector<dataset::CsvRow>& r, std::size_t k, std::size_t col, double dt) {
   return (r[k - 2].value[col] - 8.0 * r[k - 1].value[col] + 8.0 * r[k + 1].value[col] - r[k + 2].value[col]) /
          (12.0 * dt);
 }
 
-Eigen::Vector3d velocity(const io::CsvRow& r) { return triple(r, tc::vn); }
+Eigen::Vector3d velocity(const dataset::CsvRow& r) { return triple(r, tc::vn); }
 
-Eigen::Vector3d expected_specific_force(const std::vector<io::CsvRow>& tr, std::size_t k, double dt, Terms terms) {
-  const io::CsvRow& r = tr[k];
+Eigen::Vector3d expected_specific_force(const std::vector<dataset::CsvRow>& tr, std::size_t k, double dt, Terms terms) {
+  const dataset::CsvRow& r = tr[k];
   const double lat = r.value[tc::lat] * kDeg, h = r.value[tc::h];
   const Eigen::Vector3d v = velocity(r);
   const Eigen::Vector3d dv(derivative(tr, k, tc::vn, dt), derivative(tr, k, tc::ve, dt), derivative(tr, k, tc::vd, dt));
@@ -41,10 +41,10 @@ Eigen::Vector3d expected_specific_force(const std::vector<io::CsvRow>& tr, std::
 }
 
 // omega_nb_b from the derivative of the DCM: skew(w) = C_bn dC_nb/dt.
-Eigen::Vector3d omega_nb_b(const std::vector<io::CsvRow>& tr, std::size_t k, double dt) {
+Eigen::Vector3d omega_nb_b(const std::vector<dataset::CsvRow>& tr, std::size_t k, double dt) {
   Eigen::Matrix3d c[5];
   for (int j = 0; j < 5; ++j) {
-    io::CsvRow r = tr[k + static_cast<std::size_t>(j) - 2];
+    dataset::CsvRow r = tr[k + static_cast<std::size_t>(j) - 2];
     // Unwrap yaw against the centre row so +-180 deg does not jump.
     r.value[tc::yaw] = tr[k].value[tc::yaw] + std::remainder(r.value[tc::yaw] - tr[k].value[tc::yaw], 360.0);
     c[j] = ref::C_nb_of(r);
@@ -54,8 +54,8 @@ Eigen::Vector3d omega_nb_b(const std::vector<io::CsvRow>& tr, std::size_t k, dou
   return {0.5 * (s(2, 1) - s(1, 2)), 0.5 * (s(0, 2) - s(2, 0)), 0.5 * (s(1, 0) - s(0, 1))};
 }
 
-Eigen::Vector3d expected_rate(const std::vector<io::CsvRow>& tr, std::size_t k, double dt, Terms terms) {
-  const io::CsvRow& r = tr[k];
+Eigen::Vector3d expected_rate(const std::vector<dataset::CsvRow>& tr, std::size_t k, double dt, Terms terms) {
+  const dataset::CsvRow& r = tr[k];
   const double lat = r.value[tc::lat] * kDeg, h = r.value[tc::h];
   Eigen::Vector3d w = Eigen::Vector3d::Zero();
   if (terms.coriolis) w += ref::earth_rate_n(lat);
@@ -70,7 +70,7 @@ struct Residuals {
 };
 
 template <class Expected>
-Residuals residuals(const std::vector<io::CsvRow>& imu, const std::vector<io::CsvRow>& tr, std::size_t first_col,
+Residuals residuals(const std::vector<dataset::CsvRow>& imu, const std::vector<dataset::CsvRow>& tr, std::size_t first_col,
                     std::size_t window, Expected expected) {
   Residuals out;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
@@ -96,8 +96,8 @@ class FlightPhysics : public ::testing::Test {
   static void SetUpTestSuite() {
     run_ = new SimRun;
     run(*run_, ideal_flight(11, 900.0));
-    imu_ = new std::vector<io::CsvRow>(run_->imu());
-    truth_ = new std::vector<io::CsvRow>(run_->truth());
+    imu_ = new std::vector<dataset::CsvRow>(run_->imu());
+    truth_ = new std::vector<dataset::CsvRow>(run_->truth());
   }
   static void TearDownTestSuite() {
     delete imu_;
@@ -107,8 +107,8 @@ class FlightPhysics : public ::testing::Test {
   static constexpr double kDt = 1.0 / 40.0;
   static constexpr std::size_t kWindow = 40;  // 1 s
   static SimRun* run_;
-  static std::vector<io::CsvRow>* imu_;
-  static std::vector<io::CsvRow>* truth_;
+  static std::vector<dataset::CsvRow>* imu_;
+  static std::vector<dataset::CsvRow>* truth_;
 
   Residuals force(Terms t) const {
     return residuals(*imu_, *truth_, ic::ax, kWindow,
@@ -119,8 +119,8 @@ class FlightPhysics : public ::testing::Test {
   }
 };
 SimRun* FlightPhysics::run_ = nullptr;
-std::vector<io::CsvRow>* FlightPhysics::imu_ = nullptr;
-std::vector<io::CsvRow>* FlightPhysics::truth_ = nullptr;
+std::vector<dataset::CsvRow>* FlightPhysics::imu_ = nullptr;
+std::vector<dataset::CsvRow>* FlightPhysics::truth_ = nullptr;
 
 }  // namespace
 

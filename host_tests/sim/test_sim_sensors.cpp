@@ -14,8 +14,8 @@
 
 using namespace sinu;
 using namespace sinu::test;
-namespace tc = io::truth_col;
-namespace ic = io::imu_col;
+namespace tc = dataset::truth_col;
+namespace ic = dataset::imu_col;
 
 namespace {
 
@@ -112,7 +112,7 @@ TEST(StaticSession, DefaultModelMeanIsWithinTheConfiguredBiasesAndProcesses) {
   EXPECT_FALSE(std::filesystem::exists(tmp.file("bench/truth.csv")));
   std::ifstream in(tmp.file("hidden.json"));
   const nlohmann::json hidden = nlohmann::json::parse(in);
-  const auto rows = load_rows(tmp.file("bench/imu.csv"), io::kImuSchema);
+  const auto rows = load_rows(tmp.file("bench/imu.csv"), dataset::kImuSchema);
   ASSERT_EQ(rows.size(), 3600u * 40u);
   Eigen::Vector3d accel = Eigen::Vector3d::Zero(), gyro = Eigen::Vector3d::Zero();
   for (const auto& row : rows) {
@@ -142,7 +142,7 @@ TEST(StaticSession, DefaultModelMeanIsWithinTheConfiguredBiasesAndProcesses) {
 namespace {
 
 // Antenna position of a truth row: IMU + C_nb l, as geodetic, with the test's radii.
-void antenna(const io::CsvRow& r, const Eigen::Vector3d& lever_b, double& lat, double& lon, double& h) {
+void antenna(const dataset::CsvRow& r, const Eigen::Vector3d& lever_b, double& lat, double& lon, double& h) {
   const double lat0 = r.value[tc::lat] * kDeg, h0 = r.value[tc::h];
   const Eigen::Vector3d d = ref::C_nb_of(r) * lever_b;
   lat = lat0 + d.x() / (ref::r_meridian(lat0) + h0);

@@ -1,5 +1,5 @@
 // The fault injector on a simulated flight, each fault checked with the
-// project's own readers (io::CsvReader, io::NmeaLogReader / GpsLogReader,
+// project's own readers (dataset::CsvReader, dataset::NmeaLogReader / GpsLogReader,
 // drivers::NmeaParser) and byte for byte outside its window.
 #include <gtest/gtest.h>
 
@@ -11,14 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "firmware/dataset/nmea_log.hpp"
+#include "firmware/host/dataset/nmea_log.hpp"
 #include "host_tests/sim/gps_log.hpp"
 #include "host_tests/sim/sim_test_support.hpp"
 #include "host_tests/support/dataset_faults.hpp"
 
 using namespace sinu;
 using namespace sinu::test;
-namespace ic = io::imu_col;
+namespace ic = dataset::imu_col;
 
 namespace {
 
@@ -95,13 +95,13 @@ Position position_of(const drivers::NmeaMessage& m) {
 }
 
 std::vector<drivers::GpsFix> read_fixes(const std::string& path) {
-  io::GpsLogReader r;
+  dataset::GpsLogReader r;
   EXPECT_TRUE(r.open(path));
   std::vector<drivers::GpsFix> fixes;
   drivers::GpsFix fix;
-  io::ReadStatus s;
-  while ((s = r.next(fix)) == io::ReadStatus::Row) fixes.push_back(fix);
-  EXPECT_EQ(s, io::ReadStatus::End) << r.error().to_string();
+  dataset::ReadStatus s;
+  while ((s = r.next(fix)) == dataset::ReadStatus::Row) fixes.push_back(fix);
+  EXPECT_EQ(s, dataset::ReadStatus::End) << r.error().to_string();
   return fixes;
 }
 
@@ -269,14 +269,14 @@ TEST_F(DatasetFaults, GarbageIsCountedCorruptByTheReaderAndDeterministicPerSeed)
   // The project's reader: every line still read (the arrival prefix parses),
   // every window line rejected by the parser, the others as before.
   auto parse_all = [](const std::string& path, std::vector<drivers::ParseResult>& results) {
-    io::NmeaLogReader log;
+    dataset::NmeaLogReader log;
     EXPECT_TRUE(log.open(path));
     drivers::NmeaParser parser;
-    io::NmeaLogLine line;
+    dataset::NmeaLogLine line;
     drivers::NmeaMessage msg;
-    io::ReadStatus s;
-    while ((s = log.next(line)) == io::ReadStatus::Row) results.push_back(parser.parse(line.sentence, msg));
-    EXPECT_EQ(s, io::ReadStatus::End) << log.error().to_string();
+    dataset::ReadStatus s;
+    while ((s = log.next(line)) == dataset::ReadStatus::Row) results.push_back(parser.parse(line.sentence, msg));
+    EXPECT_EQ(s, dataset::ReadStatus::End) << log.error().to_string();
     EXPECT_EQ(log.skipped_lines(), 0u) << log.first_skipped().to_string();
     return parser.counters();
   };
@@ -336,7 +336,7 @@ TEST_F(DatasetFaults, ImuGapRemovesExactlyTheWindow) {
   EXPECT_EQ(after, kept);
   EXPECT_EQ(after.at(0), "t,ax,ay,az,gx,gy,gz,mx,my,mz,temp\n");
   EXPECT_EQ(effects.at(0).removed, 140u) << "3.5 s at 40 Hz";
-  const auto rows = load_rows(dst("imu.csv"), io::kImuSchema);  // fails the test on any read error
+  const auto rows = load_rows(dst("imu.csv"), dataset::kImuSchema);  // fails the test on any read error
   EXPECT_EQ(rows.size(), kept.size() - 1);
   for (const auto& r : rows) EXPECT_FALSE(in_window(r.t(), start, duration));
   expect_copied("gps.nmea");
@@ -357,7 +357,7 @@ TEST_F(DatasetFaults, PeggedClipReadsFullScaleOnTheChosenAxesOnly) {
 
   const auto before = lines_of(src("imu.csv")), after = lines_of(dst("imu.csv"));
   ASSERT_EQ(before.size(), after.size());
-  const auto rows = load_rows(dst("imu.csv"), io::kImuSchema);
+  const auto rows = load_rows(dst("imu.csv"), dataset::kImuSchema);
   ASSERT_EQ(rows.size() + 1, after.size());
   std::size_t pegged = 0;
   for (std::size_t i = 1; i < before.size(); ++i) {
@@ -391,7 +391,7 @@ TEST_F(DatasetFaults, VibrationClipStaysWithinFullScaleAndShiftsTheMean) {
   const double fs = clip.accel_full_scale_m_s2;
 
   const auto before = lines_of(src("imu.csv")), after = lines_of(dst("imu.csv"));
-  const auto rb = flight_->imu(), ra = load_rows(dst("imu.csv"), io::kImuSchema);
+  const auto rb = flight_->imu(), ra = load_rows(dst("imu.csv"), dataset::kImuSchema);
   ASSERT_EQ(ra.size(), rb.size());
   std::size_t n = 0, at_full_scale = 0;
   double mean_before = 0.0, mean_after = 0.0;
@@ -428,17 +428,17 @@ TEST_F(DatasetFaults, DroppedMagnetometerRowsHaveEmptyMagFields) {
   EXPECT_EQ(effects.at(0).changed, 100u);
   const auto before = lines_of(src("imu.csv")), after = lines_of(dst("imu.csv"));
   ASSERT_EQ(before.size(), after.size());
-  const auto rb = flight_->imu(), ra = load_rows(dst("imu.csv"), io::kImuSchema);
+  const auto rb = flight_->imu(), ra = load_rows(dst("imu.csv"), dataset::kImuSchema);
   ASSERT_EQ(ra.size(), rb.size());
   for (std::size_t i = 0; i < 100; ++i) {
-    io::ImuRow row{ra[i]};
+    dataset::ImuRow row{ra[i]};
     EXPECT_FALSE(ra[i].has(ic::mx) || ra[i].has(ic::my) || ra[i].has(ic::mz));
     EXPECT_FALSE(row.has_mag());
     EXPECT_TRUE(row.has_accel() && row.has_gyro() && row.has_temp());
     const auto fb = fields_of(before[i + 1]), fa = fields_of(after[i + 1]);
     for (std::size_t c : {ic::t, ic::ax, ic::ay, ic::az, ic::gx, ic::gy, ic::gz, ic::temp}) EXPECT_EQ(fa[c], fb[c]);
   }
-  EXPECT_TRUE(io::ImuRow{ra[100]}.has_mag());
+  EXPECT_TRUE(dataset::ImuRow{ra[100]}.has_mag());
   EXPECT_EQ(std::vector(after.begin() + 101, after.end()), std::vector(before.begin() + 101, before.end()));
   EXPECT_EQ(after[0], before[0]);
   expect_copied("gps.nmea");
@@ -462,8 +462,8 @@ TEST_F(DatasetFaults, DropLeadingSecondsStartsEveryFileAfterTheCut) {
     removed += before.size() - after.size();
   }
   EXPECT_EQ(effects.at(0).removed, removed);
-  EXPECT_GE(load_rows(dst("imu.csv"), io::kImuSchema).front().t(), cut);
-  EXPECT_GE(load_rows(dst("truth.csv"), io::kTruthSchema).front().t(), cut);
+  EXPECT_GE(load_rows(dst("imu.csv"), dataset::kImuSchema).front().t(), cut);
+  EXPECT_GE(load_rows(dst("truth.csv"), dataset::kTruthSchema).front().t(), cut);
   const auto fixes = read_fixes(dst("gps.nmea"));
   ASSERT_FALSE(fixes.empty());
   EXPECT_GE(fixes.front().arrival_s, cut);
@@ -485,15 +485,15 @@ TEST_F(DatasetFaults, SeveralFaultsApplyInTheirOrder) {
   EXPECT_EQ(effects[3].changed, 40u);
   EXPECT_EQ(effects[4].changed, 10u);
   EXPECT_EQ(effects[5].changed, 0u) << "the jump comes after the garbage: no valid sentence left to move";
-  EXPECT_EQ(load_rows(dst("imu.csv"), io::kImuSchema).size(), flight_->imu().size() - 80);
+  EXPECT_EQ(load_rows(dst("imu.csv"), dataset::kImuSchema).size(), flight_->imu().size() - 80);
   // The product's reader goes through the whole result, counting the garbage.
-  io::GpsLogReader r;
+  dataset::GpsLogReader r;
   ASSERT_TRUE(r.open(dst("gps.nmea")));
   drivers::GpsFix fix;
-  io::ReadStatus status;
-  while ((status = r.next(fix)) == io::ReadStatus::Row)
+  dataset::ReadStatus status;
+  while ((status = r.next(fix)) == dataset::ReadStatus::Row)
     EXPECT_FALSE(in_window(fix.arrival_s, t.gps.first_s + 20.0, 5.0));
-  EXPECT_EQ(status, io::ReadStatus::End);
+  EXPECT_EQ(status, dataset::ReadStatus::End);
   EXPECT_GE(r.corrupt(), effects[1].changed);
 }
 
@@ -528,6 +528,6 @@ TEST_F(DatasetFaults, CrLfFilesKeepTheirLineEndings) {
     EXPECT_EQ(lines.back().find_first_of("\r\n"), std::string::npos) << f << ": the last line has no terminator";
   }
   EXPECT_EQ(read_file(dst("truth.csv")), read_file(crlf.file("truth.csv")));
-  load_rows(dst("imu.csv"), io::kImuSchema);
+  load_rows(dst("imu.csv"), dataset::kImuSchema);
   read_gps_log(dst("gps.nmea"));
 }

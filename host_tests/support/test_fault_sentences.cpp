@@ -8,8 +8,8 @@
 #include <string>
 
 #include "drivers/gps/nmea_parser.hpp"
-#include "firmware/dataset/csv_table.hpp"
-#include "firmware/dataset/imu_csv.hpp"
+#include "firmware/host/dataset/csv_table.hpp"
+#include "firmware/host/dataset/imu_csv.hpp"
 #include "host_tests/sim/sim_test_support.hpp"
 #include "host_tests/support/dataset_faults.hpp"
 #include "host_tests/support/faults/nmea_garbage.hpp"
@@ -153,12 +153,12 @@ TEST(FaultSentences, ClipAndMagKeepEmptyFieldsAndOtherNumberForms) {
   EXPECT_EQ(lines[0].text, "t,ax,ay,az,gx,gy,gz,mx,my,mz,temp");
   EXPECT_EQ(lines[1].text, "10.000,-16,,-9.81,0.01,0.02,0.03,,,,25") << "the empty ay stays empty";
   EXPECT_EQ(lines[2].text, "10.025,-16,16,-9.80665,+0.01,0.02,0.03,,,,25") << "other forms kept byte for byte";
-  io::CsvReader r(io::kImuSchema);
+  dataset::CsvReader r(dataset::kImuSchema);
   ASSERT_TRUE(r.open(dst.file("imu.csv"))) << r.error().to_string();
-  io::CsvRow row;
-  EXPECT_EQ(r.next(row), io::ReadStatus::Row);
-  EXPECT_EQ(r.next(row), io::ReadStatus::Row);
-  EXPECT_EQ(r.next(row), io::ReadStatus::End) << r.error().to_string();
+  dataset::CsvRow row;
+  EXPECT_EQ(r.next(row), dataset::ReadStatus::Row);
+  EXPECT_EQ(r.next(row), dataset::ReadStatus::Row);
+  EXPECT_EQ(r.next(row), dataset::ReadStatus::End) << r.error().to_string();
 }
 
 TEST(FaultSentences, GarbageNeverPassesTheProjectsSentenceCheck) {

@@ -1,6 +1,6 @@
 #pragma once
 // NMEA 0183 field text shared by every writer of sentences in the program:
-// the simulator's receiver (firmware/sim/gps_receiver) and the navigation
+// the simulator's receiver (firmware/host/sim/gps_receiver) and the navigation
 // unit's NMEA output (nmea_sentences). Everything is written into a caller's
 // buffer with snprintf: no allocation.
 #include <cstddef>

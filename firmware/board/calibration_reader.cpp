@@ -1,0 +1,164 @@
+#include "firmware/board/calibration_reader.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "estimator/wavelet/denoiser_select.hpp"
+
+namespace sinu::board {
+
+namespace {
+
+constexpr std::array<const char*, 6> kAxisNames = {"ax", "ay", "az", "gx", "gy", "gz"};
+
+bool number_at(const nlohmann::json& j, const char* key, double& out) {
+  if (!j.is_object() || !j.contains(key) || !j[key].is_number()) return false;
+  out = j[key].get<double>();
+  return std::isfinite(out);
+}
+
+// The slow wander the bias states must follow: the smallest random walk K
+// whose Allan deviation K sqrt(tau/3) stays above the measured one for every
+// cluster time from kMinTau on (minutes: longer than the GM/AR correlation
+// times and the periodic components). The deviation's own minimum (B) is not
+// used: with a periodic error it can sit at a second or less.
+constexpr double kMinTau = 100.0;  // [s]
+double bias_walk_from_allan(const nlohmann::json& axis) {
+  if (!axis.contains("allan")) return 0.0;
+  const nlohmann::json& a = axis["allan"];
+  if (!a.contains("adev") || !a.contains("tau_s") || !a["adev"].is_array() || !a["tau_s"].is_array() ||
+      a["adev"].size() != a["tau_s"].size()) {
+    return 0.0;
+  }
+  double K = 0.0;
+  for (std::size_t k = 0; k < a["tau_s"].size(); ++k) {
+    if (!a["tau_s"][k].is_number() || !a["adev"][k].is_number()) return 0.0;
+    const double tau = a["tau_s"][k].get<double>(), adev = a["adev"][k].get<double>();
+    if (tau >= kMinTau && std::isfinite(adev)) K = std::max(K, adev * std::sqrt(3.0 / tau));
+  }
+  return K;
+}
+
+}  // namespace
+
+bool parse_denoiser(const std::string& text, DenoiserSpec& out, std::string& error) {
+  out = DenoiserSpec{};
+  if (text == "none") return true;
+  const auto colon = text.find(':');
+  const std::string name = text.substr(0, colon);
+  int levels = est::wavelet::kDefaultLevels;
+  if (colon != std::string::npos) {
+    const std::string lv = text.substr(colon + 1);
+    if (lv.size() != 1 || lv[0] < '1' || lv[0] > '0' + est::wavelet::kMaxLevels) {
+      error = "denoiser '" + text + "': levels must be 1.." + std::to_string(est::wavelet::kMaxLevels);
+      return false;
+    }
+    levels = lv[0] - '0';
+  }
+  if (!est::wavelet::parse_wavelet(name)) {
+    error = "denoiser '" + text + "': unknown wavelet '" + name + "' (none, haar, db2, db4, cdf53, cdf97)";
+    return false;
+  }
+  out.wavelet = true;
+  out.name = name;
+  out.levels = levels;
+  return true;
+}
+
+bool load_calib(const std::string& path, const CalibChoice& choice, est::SensorNoise& noise, DenoiserSpec& denoiser,
+                std::string& error) {
+  std::ifstream in(path);
+  if (!in) {
+    error = path + ": cannot open";
+    return false;
+  }
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    error = path + ": not valid JSON: " + e.what();
+    return false;
+  }
+  const auto fail = [&](const std::string& key, const std::string& why) {
+    error = path + ": " + key + ": " + why;
+    return false;
+  };
+  if (!j.is_object() || !j.contains("axes") || !j["axes"].is_object()) return fail("axes", "missing");
+  noise = est::SensorNoise::defaults(choice.kind);
+  double rate = 40.0;
+  if (!number_at(j, "sample_rate_hz", rate) && !(j.contains("denoiser") && number_at(j["denoiser"], "sample_rate_hz", rate))) {
+    rate = 40.0;
+  }
+  if (!(rate > 0.0)) return fail("sample_rate_hz", "must be positive");
+  denoiser = DenoiserSpec{};
+  if (j.contains("denoiser") && j["denoiser"].is_object() && j["denoiser"].contains("wavelet") &&
+      j["denoiser"]["wavelet"].is_string()) {
+    double levels = 0.0;
+    if (!number_at(j["denoiser"], "levels", levels)) return fail("denoiser.levels", "missing");
+    std::string why;
+    if (!parse_denoiser(j["denoiser"]["wavelet"].get<std::string>() + ":" + std::to_string(static_cast<int>(levels)),
+                        denoiser, why)) {
+      return fail("denoiser", why);
+    }
+  }
+  noise.ar_sample_period_s = 1.0 / rate;
+  if (choice.kind == est::NoiseModelKind::AutoRegressive &&
+      (choice.ar_order < 1 || choice.ar_order > static_cast<int>(est::kMaxArOrder))) {
+    return fail("ar order", "must be 1.." + std::to_string(est::kMaxArOrder) + " (the EKF's compile-time maximum)");
+  }
+  double white_a = 0.0, white_g = 0.0, walk_a = 0.0, walk_g = 0.0;
+  int n_white_a = 0, n_white_g = 0, n_walk_a = 0, n_walk_g = 0;
+  for (std::size_t i = 0; i < kAxisNames.size(); ++i) {
+    const std::string key = std::string("axes.") + kAxisNames[i];
+    if (!j["axes"].contains(kAxisNames[i])) return fail(key, "missing");
+    const nlohmann::json& axis = j["axes"][kAxisNames[i]];
+    if (choice.kind == est::NoiseModelKind::GaussMarkov) {
+      if (!axis.contains("gm")) return fail(key + ".gm", "missing");
+      double tau = 0.0, var = 0.0;
+      if (!number_at(axis["gm"], "tau_s", tau) || !(tau > 0.0)) return fail(key + ".gm.tau_s", "missing or not positive");
+      if (!number_at(axis["gm"], "variance", var) || !(var >= 0.0)) return fail(key + ".gm.variance", "missing or negative");
+      noise.gm[i] = {tau, var};
+    } else {
+      const std::string mkey = key + ".ar." + choice.ar_method;
+      if (!axis.contains("ar") || !axis["ar"].contains(choice.ar_method) || !axis["ar"][choice.ar_method].is_array()) {
+        return fail(mkey, "missing");
+      }
+      const nlohmann::json& models = axis["ar"][choice.ar_method];
+      const auto p = static_cast<std::size_t>(choice.ar_order);
+      if (models.size() < p) return fail(mkey, "has no order " + std::to_string(p));
+      const nlohmann::json& m = models[p - 1];
+      if (!m.contains("a") || !m["a"].is_array() || m["a"].size() != p + 1) {
+        return fail(mkey + "[" + std::to_string(p - 1) + "].a", "must hold 1 + " + std::to_string(p) + " coefficients");
+      }
+      est::ArAxis ar;
+      ar.order = static_cast<Eigen::Index>(p);
+      for (std::size_t k = 0; k <= p; ++k) {
+        if (!m["a"][k].is_number()) return fail(mkey + ".a", "non-numeric coefficient");
+        ar.a[k] = m["a"][k].get<double>();
+      }
+      if (std::abs(ar.a[0] - 1.0) > 1e-12) return fail(mkey + ".a[0]", "must be 1 (MATLAB convention)");
+      if (!number_at(m, "variance", ar.variance) || !(ar.variance >= 0.0)) return fail(mkey + ".variance", "missing or negative");
+      noise.ar[i] = ar;
+    }
+    double N = 0.0;
+    if (axis.contains("allan") && number_at(axis["allan"], "N", N) && N > 0.0) {
+      (i < 3 ? white_a : white_g) += N * N;
+      ++(i < 3 ? n_white_a : n_white_g);
+    }
+    const double K = bias_walk_from_allan(axis);
+    if (K > 0.0) {
+      (i < 3 ? walk_a : walk_g) += K * K;
+      ++(i < 3 ? n_walk_a : n_walk_g);
+    }
+  }
+  if (n_white_a) noise.accel_white_m_s2_rthz = std::sqrt(white_a / n_white_a);
+  if (n_white_g) noise.gyro_white_rad_s_rthz = std::sqrt(white_g / n_white_g);
+  if (n_walk_a) noise.accel_bias_walk = std::sqrt(walk_a / n_walk_a);
+  if (n_walk_g) noise.gyro_bias_walk = std::sqrt(walk_g / n_walk_g);
+  return true;
+}
+
+}  // namespace sinu::board

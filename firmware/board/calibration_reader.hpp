@@ -1,0 +1,34 @@
+#pragma once
+// calib.json (written by `sinu calibrate`, issue 5) -> the EKF's sensor noise.
+// Keys read: axes.<ax|ay|az|gx|gy|gz>.gm {tau_s, variance};
+// axes.<..>.ar.<method>[p-1] {a: [1, a1..ap], variance}; axes.<..>.allan.N
+// (white-noise density, optional); the AR models' sample rate from
+// "sample_rate_hz" at the top level or inside "denoiser" (default 40 Hz).
+#include <string>
+
+#include "estimator/ekf/sensor_noise.hpp"
+
+namespace sinu::board {
+
+struct CalibChoice {
+  est::NoiseModelKind kind = est::NoiseModelKind::AutoRegressive;
+  std::string ar_method = "burg";
+  int ar_order = 3;
+};
+
+/// The denoiser the models were fitted after (calib.json "denoiser"): the
+/// same one must run in front of the INS for the models to describe its input.
+struct DenoiserSpec {
+  bool wavelet = false;        // false: none
+  std::string name = "none";   // "db4", ...
+  int levels = 0;
+};
+
+/// "none", "WAVELET:LEVELS" (e.g. "db4:3"); false with `error` otherwise.
+bool parse_denoiser(const std::string& text, DenoiserSpec& out, std::string& error);
+
+/// Fills `noise` (and `denoiser` from calib.json's "denoiser" block, none if absent); false with `error` = "calib.json: <key>: <why>" otherwise.
+bool load_calib(const std::string& path, const CalibChoice& choice, est::SensorNoise& noise, DenoiserSpec& denoiser,
+                std::string& error);
+
+}  // namespace sinu::board

@@ -1,0 +1,41 @@
+#include "firmware/board/gnss_from_fix.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace sinu::board {
+
+bool gnss_from_fix(const drivers::GpsFix& fix, const GnssSigmaConfig& cfg, est::GnssObservation& out) {
+  constexpr double kDegToRad = std::numbers::pi / 180.0;
+  if (!fix.has_position()) return false;
+  const auto h = fix.ellipsoid_height_m();
+  if (!h) return false;
+  out = {};
+  out.arrival_s = fix.arrival_s;
+  out.has_position = true;
+  out.lat_rad = *fix.lat_deg * kDegToRad;
+  out.lon_rad = *fix.lon_deg * kDegToRad;
+  out.h_m = *h;
+  Eigen::Vector3d sig;
+  if (fix.has_gst && fix.sigma_lat_m && fix.sigma_lon_m && fix.sigma_alt_m) {
+    sig = {*fix.sigma_lat_m, *fix.sigma_lon_m, *fix.sigma_alt_m};
+  } else if (fix.hdop) {
+    const double vdop = fix.vdop.value_or(1.5 * *fix.hdop);
+    sig = {*fix.hdop * cfg.uere_m / std::sqrt(2.0), *fix.hdop * cfg.uere_m / std::sqrt(2.0), vdop * cfg.uere_m};
+  } else {
+    sig = Eigen::Vector3d::Constant(cfg.no_dop_sigma_m);
+  }
+  for (Eigen::Index i = 0; i < 3; ++i) sig(i) = std::max(sig(i), cfg.min_sigma_m);
+  out.sigma_ned_m = sig;
+  if (fix.speed_m_s && fix.course_deg) {
+    out.has_velocity = true;
+    out.speed_m_s = *fix.speed_m_s;
+    out.course_rad = *fix.course_deg * kDegToRad;
+    out.v_ne_m_s = {out.speed_m_s * std::cos(out.course_rad), out.speed_m_s * std::sin(out.course_rad)};
+    out.sigma_vel_m_s = cfg.velocity_sigma_m_s;
+  }
+  return true;
+}
+
+}  // namespace sinu::board

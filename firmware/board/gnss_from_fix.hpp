@@ -1,0 +1,20 @@
+#pragma once
+// drivers::GpsFix (one NMEA epoch) -> est::GnssObservation. Position sigma
+// from GST when present, else HDOP (VDOP, or 1.5 HDOP, vertically) times a
+// user range error; velocity from RMC/VTG speed and course.
+#include "drivers/gps/gps_fix.hpp"
+#include "estimator/ekf/aiding/gnss_observation.hpp"
+
+namespace sinu::board {
+
+struct GnssSigmaConfig {
+  double uere_m = 2.5;            // user equivalent range error for sigma = DOP * UERE
+  double min_sigma_m = 0.2;      // floor: below it time tagging (20 ms at 10 m/s) and lever arms dominate
+  double velocity_sigma_m_s = 0.2;
+  double no_dop_sigma_m = 5.0;    // neither GST nor HDOP
+};
+
+/// False when the fix has no usable position.
+bool gnss_from_fix(const drivers::GpsFix& fix, const GnssSigmaConfig& cfg, est::GnssObservation& out);
+
+}  // namespace sinu::board

@@ -1,0 +1,44 @@
+#pragma once
+// What a navigation unit is made of, in the user's words: the calibration and
+// sensor-error model, the denoiser, the effect states, the GNSS and
+// magnetometer settings and what carries the unit. `sinu fly` fills it from
+// sinu.toml and its options, `sinu replay` and `sinu diagnose` from theirs;
+// NavUnit::init turns it into a running navigator.
+#include <Eigen/Core>
+#include <cmath>
+#include <string>
+
+#include "estimator/nav/navigator.hpp"
+#include "firmware/board/calibration_reader.hpp"
+#include "firmware/board/effect_selection.hpp"
+#include "firmware/board/gnss_from_fix.hpp"
+
+namespace sinu::board {
+
+struct NavUnitConfig {
+  std::string calib_path;       // calib.json; empty: documented defaults (SensorNoise::defaults)
+  CalibChoice calib;            // model: GM or AR (method, order)
+  std::string denoise = "auto"; // auto: calib.json's denoiser (none without calib); none; WAVELET:LEVELS
+  est::EffectSet effects = default_effects();
+  // The fix's latency at arrival (initial value of the gps_latency state):
+  // an NMEA epoch arrives some tens of ms after its time of validity.
+  double gps_latency_s = 0.05;
+  Eigen::Vector3d lever_arm_b_m = Eigen::Vector3d::Zero();  // antenna minus IMU, body FRD
+  double gate_sigma = 5.0;
+  GnssSigmaConfig sigma;
+  double process_noise_scale = 1.0;  // times the sensor model's coloured-error variances
+  double mag_sigma_uT = 1.0;         // magnetometer noise + disturbance, 1 sigma per axis
+  // Learn the GNSS velocity and magnetometer noise from the innovations,
+  // starting from the sigmas above (a sigma the user gives is kept fixed).
+  bool adapt_velocity_noise = true;
+  bool adapt_mag_noise = true;
+  bool use_mag = true;
+  est::VehicleKind vehicle = est::VehicleKind::Air;  // ground: non-holonomic constraint
+  // IMU full scales for the clipping screen; 0: unknown (on the board and for
+  // a recording the driver's settings give them).
+  double accel_range_m_s2 = 0.0;
+  double gyro_range_rad_s = 0.0;
+  double mag_declination_deg = NAN;  // set: align with the magnetometer at rest
+};
+
+}  // namespace sinu::board

@@ -1,0 +1,105 @@
+#include "firmware/host/convert/dataset_devices.hpp"
+
+#include <cmath>
+#include <cstring>
+
+namespace sinu::convert {
+
+hal::TimeNs seconds_to_ns(double t_s) { return std::llround(t_s * 1e9); }
+
+DatasetDevices::DatasetDevices(drivers::EmulatedIcm20948& chip, hal::ManualClock& clock)
+    : chip_(chip), clock_(clock) {}
+
+bool DatasetDevices::open(const std::string& dir) {
+  const dataset::DatasetPaths paths{dir};
+  if (!imu_.open(paths.imu())) {
+    error_ = imu_.error();
+    return false;
+  }
+  has_gps_ = paths.has_gps();
+  if (has_gps_) {
+    if (!gps_.open(paths.gps())) {
+      error_ = gps_.error();
+      return false;
+    }
+    gps_done_ = false;
+    next_line();
+  }
+  return true;
+}
+
+bool DatasetDevices::next_line() {
+  dataset::NmeaLogLine l;
+  const dataset::ReadStatus s = gps_.next(l);
+  if (s != dataset::ReadStatus::Row) {
+    if (s == dataset::ReadStatus::Error) error_ = gps_.error();
+    gps_done_ = true;
+    return false;
+  }
+  line_.assign(l.sentence);
+  line_ += "\r\n";
+  line_ns_ = seconds_to_ns(l.arrival_s);
+  line_offset_ = 0;
+  return true;
+}
+
+bool DatasetDevices::read_row() {
+  while (true) {
+    const dataset::ReadStatus s = imu_.next(row_.row);
+    if (s != dataset::ReadStatus::Row) {
+      if (s == dataset::ReadStatus::Error) error_ = imu_.error();
+      imu_done_ = true;
+      return false;
+    }
+    // The sensor always converts accel and gyro together: a row without
+    // them cannot be put into registers; it is counted and left out.
+    if (row_.has_accel() && row_.has_gyro()) break;
+    ++skipped_rows_;
+  }
+  have_row_ = true;
+  return true;
+}
+
+hal::TimeNs DatasetDevices::first_time_ns() {
+  if (!have_row_ && !imu_done_) read_row();
+  return have_row_ ? seconds_to_ns(row_.t_s()) : 0;
+}
+
+hal::EdgeStatus DatasetDevices::wait_rising(hal::TimeNs timeout_ns, hal::TimeNs& edge_time_ns) {
+  if (imu_done_) return hal::EdgeStatus::Closed;
+  if (!have_row_ && !read_row()) return hal::EdgeStatus::Closed;
+  // GPS bytes due before this edge are read first (the loop drains the
+  // serial port after each turn), as they would have been on the board.
+  const hal::TimeNs t = seconds_to_ns(row_.t_s());
+  if (!gps_done_ && line_ns_ < t) {
+    clock_.advance_to_ns(std::min(line_ns_, clock_.now_ns() + timeout_ns));
+    return hal::EdgeStatus::Timeout;
+  }
+  have_row_ = false;
+  const dataset::ImuRow& row = row_;
+  ++rows_;
+  drivers::EmulatedSample sample;
+  sample.specific_force_b_m_s2 = row.specific_force_b_m_s2();
+  sample.angular_rate_b_rad_s = row.angular_rate_b_rad_s();
+  if (row.has_mag()) sample.mag_b_uT = row.mag_b_uT();
+  sample.temp_degC = row.has_temp() ? row.temp_degC() : drivers::EmulatedSample{}.temp_degC;
+  clock_.advance_to_ns(t);
+  chip_.load(sample);
+  edge_time_ns = t;
+  return hal::EdgeStatus::Edge;
+}
+
+hal::SerialResult DatasetDevices::read(std::span<std::uint8_t> out, hal::TimeNs timeout_ns) {
+  if (gps_done_) return {imu_done_ ? hal::SerialStatus::Closed : hal::SerialStatus::Ok, 0, clock_.now_ns()};
+  // Lines after the last IMU row are all delivered at the end.
+  if (!imu_done_ && line_ns_ > clock_.now_ns() + timeout_ns) return {hal::SerialStatus::Ok, 0, clock_.now_ns()};
+  const std::size_t n = std::min(out.size(), line_.size() - line_offset_);
+  std::memcpy(out.data(), line_.data() + line_offset_, n);
+  const hal::TimeNs t = line_ns_;
+  clock_.advance_to_ns(t);
+  line_offset_ += n;
+  if (line_offset_ == line_.size()) next_line();
+  return {hal::SerialStatus::Ok, n, t};
+}
+
+}  // namespace sinu::convert

@@ -1,0 +1,174 @@
+#include "firmware/host/dataset/dataset_summary.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "firmware/host/dataset/csv_table.hpp"
+#include "firmware/host/dataset/imu_csv.hpp"
+#include "firmware/host/dataset/nmea_log.hpp"
+#include "firmware/host/dataset/truth_csv.hpp"
+
+namespace sinu::dataset {
+
+namespace {
+
+bool read_imu(const std::string& path, ImuSummary& s, Diagnostic& err) {
+  CsvReader reader(kImuSchema);
+  if (!reader.open(path)) return (err = reader.error()), false;
+  ImuRow r;
+  ReadStatus st;
+  while ((st = reader.next(r.row)) == ReadStatus::Row) {
+    s.time.add(r.t_s());
+    s.accel_rows += r.has_accel();
+    s.gyro_rows += r.has_gyro();
+    s.mag_rows += r.has_mag();
+    s.temp_rows += r.has_temp();
+  }
+  s.time.finish();
+  if (st == ReadStatus::Error) return (err = reader.error()), false;
+  if (s.time.count() == 0) return (err = Diagnostic{path, 0, 0, "no samples after the header"}), false;
+  return true;
+}
+
+bool read_gps(const std::string& path, GpsSummary& s, Diagnostic& err) {
+  GpsLogReader reader;
+  if (!reader.open(path)) return (err = reader.error()), false;
+  drivers::GpsFix fix;
+  ReadStatus st;
+  while ((st = reader.next(fix)) == ReadStatus::Row) {
+    ++s.epochs;
+    if (fix.has_position()) {
+      s.fixes.add(fix.arrival_s);
+      s.fixes_with_sigma += fix.has_gst;
+    }
+  }
+  s.fixes.finish();
+  if (st == ReadStatus::Error) return (err = reader.error()), false;
+  s.late_sentences = reader.late_sentences();
+  s.lines = reader.log().lines();
+  s.skipped_lines = reader.log().skipped_lines();
+  s.sentences = reader.counters();
+  s.first_corrupt = reader.log().skipped_lines() > 0 ? reader.log().first_skipped() : reader.first_corrupt();
+  return true;
+}
+
+bool read_truth(const std::string& path, TruthSummary& s, Diagnostic& err) {
+  CsvReader reader(kTruthSchema);
+  if (!reader.open(path)) return (err = reader.error()), false;
+  CsvRow r;
+  ReadStatus st;
+  while ((st = reader.next(r)) == ReadStatus::Row) {
+    s.time.add(r.t());
+    s.attitude_rows += r.has(truth_col::roll) && r.has(truth_col::pitch) && r.has(truth_col::yaw);
+  }
+  s.time.finish();
+  if (st == ReadStatus::Error) return (err = reader.error()), false;
+  return true;
+}
+
+std::string rate_line(const char* what, const RateTracker& r, const char* unit) {
+  std::string out = fmt::format("  {:<9} {:>9} {}  {:.3f} .. {:.3f} s  ({:.1f} s)  {:.2f} Hz", what, r.count(), unit,
+                                r.first_s(), r.last_s(), r.duration_s(), r.nominal_rate_hz());
+  if (r.gaps() > 0)
+    out += fmt::format("  {} gaps, longest {:.3f} s at t={:.3f}", r.gaps(), r.longest_gap_s(), r.longest_gap_at_s());
+  else
+    out += "  no gaps";
+  return out + "\n";
+}
+
+nlohmann::json rate_json(const RateTracker& r) {
+  return {{"count", r.count()},        {"t_first", r.first_s()},  {"t_last", r.last_s()},
+          {"duration_s", r.duration_s()}, {"rate_hz", r.nominal_rate_hz()}, {"gaps", r.gaps()},
+          {"longest_gap_s", r.longest_gap_s()}, {"longest_gap_at", r.longest_gap_at_s()}};
+}
+
+}  // namespace
+
+bool summarize_dataset(const DatasetPaths& paths, DatasetSummary& out, Diagnostic& err) {
+  out = DatasetSummary{};
+  out.dir = paths.dir.string();
+  if (!std::filesystem::is_directory(paths.dir)) {
+    err = Diagnostic{out.dir, 0, 0, "not a directory"};
+    return false;
+  }
+  if (!std::filesystem::exists(paths.imu())) {
+    err = Diagnostic{paths.imu(), 0, 0, "missing: every dataset needs imu.csv"};
+    return false;
+  }
+  if (!read_imu(paths.imu(), out.imu, err)) return false;
+  if (paths.has_gps() && !read_gps(paths.gps(), out.gps.emplace(), err)) return false;
+  if (paths.has_truth() && !read_truth(paths.truth(), out.truth.emplace(), err)) return false;
+  if (paths.has_meta() && !read_meta(paths.meta(), out.meta.emplace(), err)) return false;
+  return true;
+}
+
+std::string format_summary(const DatasetSummary& s) {
+  std::string o = fmt::format("dataset {}\n", s.dir);
+  o += rate_line("imu.csv", s.imu.time, "rows");
+  o += fmt::format("            accel {} gyro {} mag {} temp {} rows\n", s.imu.accel_rows, s.imu.gyro_rows,
+                   s.imu.mag_rows, s.imu.temp_rows);
+  if (s.gps) {
+    const auto& g = *s.gps;
+    o += fmt::format("  gps.nmea  {:>9} lines  {} sentences decoded, {} ignored, {} corrupt", g.lines,
+                     g.sentences.good, g.sentences.ignored, g.sentences.corrupt() + g.skipped_lines);
+    o += fmt::format(" (checksum {}, no checksum {}, too long {}, framing {}, bad field {}, bad line {})\n",
+                     g.sentences.bad_checksum, g.sentences.missing_checksum, g.sentences.too_long,
+                     g.sentences.bad_framing, g.sentences.malformed_field, g.skipped_lines);
+    o += fmt::format("            {} epochs, {} with a position fix ({} with GST sigmas)", g.epochs, g.fixes.count(),
+                     g.fixes_with_sigma);
+    if (g.late_sentences) o += fmt::format("; {} late or repeated-time sentences dropped", g.late_sentences);
+    o += "\n";
+    if (g.fixes.count() > 0) o += rate_line("fixes", g.fixes, "fixes");
+    if (!g.first_corrupt.message.empty()) o += "            first corrupt: " + g.first_corrupt.to_string() + "\n";
+  } else {
+    o += "  gps.nmea  absent\n";
+  }
+  if (s.truth) {
+    o += rate_line("truth.csv", s.truth->time, "rows");
+    o += fmt::format("            attitude in {} rows\n", s.truth->attitude_rows);
+  } else {
+    o += "  truth.csv absent\n";
+  }
+  if (s.meta) {
+    o += fmt::format("  meta.json imu_rate_hz {}  gps_rate_hz {}\n",
+                     s.meta->imu_rate_hz ? fmt::format("{:g}", *s.meta->imu_rate_hz) : "-",
+                     s.meta->gps_rate_hz ? fmt::format("{:g}", *s.meta->gps_rate_hz) : "-");
+  } else {
+    o += "  meta.json absent\n";
+  }
+  return o;
+}
+
+std::string format_summary_json(const DatasetSummary& s) {
+  nlohmann::json j;
+  j["dir"] = s.dir;
+  j["imu"] = {{"time", rate_json(s.imu.time)},
+              {"accel_rows", s.imu.accel_rows},
+              {"gyro_rows", s.imu.gyro_rows},
+              {"mag_rows", s.imu.mag_rows},
+              {"temp_rows", s.imu.temp_rows}};
+  if (s.gps) {
+    const auto& g = *s.gps;
+    j["gps"] = {{"lines", g.lines},
+                {"sentences_good", g.sentences.good},
+                {"sentences_ignored", g.sentences.ignored},
+                {"corrupt", g.sentences.corrupt() + g.skipped_lines},
+                {"bad_checksum", g.sentences.bad_checksum},
+                {"missing_checksum", g.sentences.missing_checksum},
+                {"too_long", g.sentences.too_long},
+                {"bad_framing", g.sentences.bad_framing},
+                {"malformed_field", g.sentences.malformed_field},
+                {"skipped_lines", g.skipped_lines},
+                {"epochs", g.epochs},
+                {"fixes", rate_json(g.fixes)},
+                {"fixes_with_sigma", g.fixes_with_sigma},
+                {"late_sentences", g.late_sentences}};
+  }
+  if (s.truth) j["truth"] = {{"time", rate_json(s.truth->time)}, {"attitude_rows", s.truth->attitude_rows}};
+  if (s.meta) j["meta"] = s.meta->object;
+  return j.dump(1) + "\n";
+}
+
+}  // namespace sinu::dataset

@@ -1,0 +1,67 @@
+#pragma once
+// `sinu diagnose`: compare the model with the measurements, show where it
+// fails, and name the missing physical effect.
+//
+// 1. Replay the data with the current model (baseline) and score it: per
+//    aiding source and flight phase, the NIS of the innovations against the
+//    filter's own sigmas (1 per component when the model is right), their
+//    mean (a bias) and the rejections.
+// 2. For each candidate effect in the vocabulary the EKF can estimate, replay
+//    again with its states added; score the innovations' likelihood. An effect
+//    that is really in the data makes the filter predict its measurements
+//    better: the negative log-likelihood falls by far more than the BIC
+//    penalty of its extra states, and its estimate is many sigmas from zero.
+// 3. Keep the best such effect, repeat (greedy) for a few rounds, and report
+//    the sequence with the error before and after.
+#include <string>
+#include <vector>
+
+#include "estimator/ekf/state_layout.hpp"
+#include "firmware/host/diagnose/innovation_stats.hpp"
+#include "firmware/host/replay/replay_options.hpp"
+
+namespace sinu::diagnose {
+
+struct DiagnoseOptions {
+  replay::ReplayOptions replay;  // in_dir, calib, model, baseline effects
+  std::string out_dir;           // report.md, diagnosis.json, baseline/ (the baseline replay's files)
+  est::EffectSet candidates;     // tried one at a time
+  int rounds = 2;
+  double min_significance = 3.0;  // |estimate| / sigma of at least one component
+  bool tune_mag_sigma = true;     // scale the magnetometer sigma so its NIS is 1 before comparing
+  bool tune_process_noise = true; // without calib.json: pick the default model's scale by likelihood
+};
+
+struct CandidateResult {
+  est::Effect effect{};
+  double nll_gain = 0.0;     // baseline NLL - NLL with the effect
+  double penalty = 0.0;      // BIC: 0.5 k ln(N)
+  double significance = 0.0; // max |estimate - assumed value| / sigma
+  std::vector<double> estimate, sigma;
+  InnovationStats stats;
+  double rmse_pos_h_m = -1.0, rmse_att_deg = -1.0;  // against truth.csv (-1: none)
+  bool explains(double min_significance) const { return nll_gain > penalty && significance >= min_significance; }
+};
+
+struct Round {
+  est::EffectSet model;             // the effects in the model this round starts from
+  InnovationStats stats;            // its score
+  double rmse_pos_h_m = -1.0, rmse_att_deg = -1.0;
+  std::vector<CandidateResult> candidates;  // best first
+  bool found = false;               // candidates.front() explains the data
+};
+
+struct Diagnosis {
+  double mag_sigma_uT = 0.0;         // the magnetometer sigma used (tuned from the baseline's NIS)
+  double mag_sigma_given_uT = 0.0;   // as configured
+  double vel_sigma_m_s = 0.0, vel_sigma_given_m_s = 0.0;  // GNSS velocity sigma, likewise
+  double process_noise_scale = 1.0;  // chosen by likelihood (1 with a calib.json)
+  std::vector<Round> rounds;
+  std::vector<est::Effect> missing;  // in the order found
+};
+
+/// Runs the replays (in memory; the baseline's files under out_dir/baseline)
+/// and writes report.md and diagnosis.json into out_dir. False with a one-line `error` on bad input.
+bool run_diagnosis(const DiagnoseOptions& options, Diagnosis& out, std::string& error);
+
+}  // namespace sinu::diagnose

@@ -1,0 +1,202 @@
+#include "firmware/host/diagnose/diagnosis_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+namespace sinu::diagnose {
+
+namespace {
+
+struct Unit {
+  const char* name;
+  double scale;  // state unit -> shown unit
+};
+
+/// Display units of the effect states (est::kEffectNames order).
+constexpr std::array<Unit, est::kEffectCount> kUnits = {{{"ppm", 1e6},
+                                                          {"ppm", 1e6},
+                                                          {"m", 1.0},
+                                                          {"s", 1.0},
+                                                          {"m/s^2/degC", 1.0},
+                                                          {"deg/s/degC", 180.0 / 3.141592653589793},
+                                                          {"m/s^2", 1.0},
+                                                          {"deg/s", 180.0 / 3.141592653589793},
+                                                          {"m", 1.0},
+                                                          {"uT", 1.0},
+                                                          {"uT", 1.0},
+                                                          {"-", 1.0}}};
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+std::string effect_list(const est::EffectSet& s) {
+  std::string out;
+  for (std::size_t e = 0; e < est::kEffectCount; ++e) {
+    if (s.has(static_cast<est::Effect>(e))) out += std::string(out.empty() ? "" : ", ") + est::kEffectNames[e];
+  }
+  return out.empty() ? "none" : out;
+}
+
+std::string estimate_text(const CandidateResult& c) {
+  const auto e = static_cast<std::size_t>(c.effect);
+  std::string out;
+  for (std::size_t i = 0; i < c.estimate.size(); ++i) {
+    out += (i ? ", " : "") + fmt("%.4g", c.estimate[i] * kUnits[e].scale) + " +- " +
+           fmt("%.2g", c.sigma[i] * kUnits[e].scale);
+  }
+  return (c.estimate.size() > 1 ? "[" + out + "]" : out) + " " + kUnits[e].name;
+}
+
+std::string nis_cell(const ComponentStats& s) { return s.count ? fmt("%.2f", s.nis()) : std::string("-"); }
+
+std::string rmse_text(double v, const char* unit) { return v >= 0.0 ? fmt("%.3g", v) + " " + unit : std::string("n/a"); }
+
+// The (source, phase) cell where the model fits worst relative to the same
+// source over the whole flight: a missing effect shows up where the vehicle
+// does what excites it (a latency in speed changes, a lever arm in turns).
+std::string worst_cell(const InnovationStats& s) {
+  double worst = 0.0;
+  std::string text;
+  for (std::size_t k = 0; k < kSources; ++k) {
+    const double overall = s.source[k].nis();
+    if (!(overall > 0.0)) continue;
+    for (std::size_t p = 0; p < kPhaseCount; ++p) {
+      const ComponentStats& c = s.by_phase[k][p];
+      if (c.count < 50 || c.nis() / overall <= worst) continue;
+      worst = c.nis() / overall;
+      text = std::string(kSourceNames[k]) + " during " + kPhaseNames[p] + " (NIS " + fmt("%.2f", c.nis()) + ", " +
+             fmt("%.1f", worst) + "x its flight average " + fmt("%.2f", overall) + "; 1 when the model is right)";
+    }
+  }
+  return text;
+}
+
+}  // namespace
+
+std::string diagnosis_summary(const DiagnoseOptions& o, const Diagnosis& d) {
+  std::string out = "diagnose " + o.replay.in_dir + "\n";
+  if (d.rounds.empty()) return out;
+  const Round& base = d.rounds.front();
+  if (d.mag_sigma_uT != d.mag_sigma_given_uT) {
+    out += "  magnetometer sigma tuned from " + fmt("%.2f", d.mag_sigma_given_uT) + " to " + fmt("%.2f", d.mag_sigma_uT) +
+           " uT (its NIS per component was " + fmt("%.2f", std::pow(d.mag_sigma_uT / d.mag_sigma_given_uT, 2)) + ")\n";
+  }
+  if (d.vel_sigma_m_s != d.vel_sigma_given_m_s) {
+    out += "  GNSS velocity sigma tuned from " + fmt("%.2f", d.vel_sigma_given_m_s) + " to " + fmt("%.3f", d.vel_sigma_m_s) +
+           " m/s (its NIS per component was " + fmt("%.2f", std::pow(d.vel_sigma_m_s / d.vel_sigma_given_m_s, 2)) + ")\n";
+  }
+  if (d.process_noise_scale != 1.0) {
+    out += "  no calib.json: the built-in sensor model's coloured-error variances scaled by " +
+           fmt("%.2g", d.process_noise_scale) + " (maximum likelihood of the innovations)\n";
+  }
+  out += "  baseline model (" + effect_list(base.model) + "): fits worst in " + worst_cell(base.stats) + "\n";
+  if (d.missing.empty()) {
+    out += "  no candidate effect explains the misfit (see report.md for each candidate's score)\n";
+  }
+  for (std::size_t r = 0; r < d.rounds.size(); ++r) {
+    const Round& round = d.rounds[r];
+    if (!round.found) continue;
+    const CandidateResult& c = round.candidates.front();
+    out += "  missing effect: " + std::string(est::kEffectNames[static_cast<std::size_t>(c.effect)]) + " = " +
+           estimate_text(c) + " (innovation log-likelihood +" + fmt("%.1f", c.nll_gain) + ", BIC penalty " +
+           fmt("%.1f", c.penalty) + ")\n";
+  }
+  const Round& last = d.rounds.back();
+  if (!d.missing.empty()) {
+    out += "  error before -> after: horizontal RMSE " + rmse_text(base.rmse_pos_h_m, "m") + " -> " +
+           rmse_text(last.rmse_pos_h_m, "m") + ", attitude " + rmse_text(base.rmse_att_deg, "deg") + " -> " +
+           rmse_text(last.rmse_att_deg, "deg") + "; NIS per component";
+    for (std::size_t k = 0; k < kSources; ++k) {
+      if (!base.stats.source[k].count) continue;
+      out += std::string(" ") + kSourceNames[k] + " " + nis_cell(base.stats.source[k]) + " -> " +
+             nis_cell(last.stats.source[k]);
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& error) {
+  std::ofstream md(o.out_dir + "/report.md");
+  nlohmann::json j;
+  j["dataset"] = o.replay.in_dir;
+  j["baseline_effects"] = effect_list(o.replay.unit.effects);
+  md << "# sinu diagnose: " << o.replay.in_dir << "\n\n";
+  md << "Each run is a full `sinu replay` (folders beside this report). NIS per component is y^2/S for each\n"
+        "innovation component, averaged: 1 when the filter's model predicts the measurements as well as it\n"
+        "claims. A candidate effect is named when adding its states raises the innovations' log-likelihood by\n"
+        "more than the BIC penalty 0.5 k ln(N) and its estimate is at least "
+     << o.min_significance << " sigma from zero.\n\n";
+  if (!d.rounds.empty()) {
+    const Round& base = d.rounds.front();
+    md << "## Where the baseline model fails\n\nModel: " << effect_list(base.model) << ". Horizontal RMSE against truth: "
+       << rmse_text(base.rmse_pos_h_m, "m") << ", attitude " << rmse_text(base.rmse_att_deg, "deg") << ".\n\n";
+    md << "| source | components | NIS per component | mean innovation [sigma] | rejected |\n|---|---|---|---|---|\n";
+    for (std::size_t k = 0; k < kSources; ++k) {
+      const ComponentStats& c = base.stats.source[k];
+      if (!c.count) continue;
+      md << "| " << kSourceNames[k] << " | " << c.count << " | " << nis_cell(c) << " | " << fmt("%.2f", c.mean_z())
+         << " | " << c.rejected << " |\n";
+    }
+    md << "\nBy flight phase (NIS per component; from the solution's yaw rate, vertical speed and acceleration):\n\n";
+    md << "| phase |";
+    for (const char* s : kSourceNames) md << " " << s << " |";
+    md << "\n|---|---|---|---|\n";
+    for (std::size_t p = 0; p < kPhaseCount; ++p) {
+      md << "| " << kPhaseNames[p] << " |";
+      for (std::size_t k = 0; k < kSources; ++k) md << " " << nis_cell(base.stats.by_phase[k][p]) << " |";
+      md << "\n";
+    }
+    md << "\nWorst fit: " << worst_cell(base.stats) << ".\n\n";
+  }
+  nlohmann::json rounds = nlohmann::json::array();
+  for (std::size_t r = 0; r < d.rounds.size(); ++r) {
+    const Round& round = d.rounds[r];
+    if (round.candidates.empty()) continue;
+    md << "## Round " << r + 1 << ": candidates added to (" << effect_list(round.model) << ")\n\n";
+    md << "| effect | log-likelihood gain | BIC penalty | max abs(estimate - assumed)/sigma | estimate | NIS pos / vel / mag | "
+          "horizontal RMSE vs truth |\n|---|---|---|---|---|---|---|\n";
+    nlohmann::json cands = nlohmann::json::array();
+    for (const CandidateResult& c : round.candidates) {
+      const auto e = static_cast<std::size_t>(c.effect);
+      md << "| " << est::kEffectNames[e] << (c.explains(o.min_significance) ? " **(explains)**" : "") << " | "
+         << fmt("%.1f", c.nll_gain) << " | " << fmt("%.1f", c.penalty) << " | " << fmt("%.1f", c.significance)
+         << " | " << estimate_text(c) << " | " << nis_cell(c.stats.source[0]) << " / " << nis_cell(c.stats.source[1])
+         << " / " << nis_cell(c.stats.source[2]) << " | " << rmse_text(c.rmse_pos_h_m, "m") << " |\n";
+      cands.push_back({{"effect", est::kEffectNames[e]}, {"nll_gain", c.nll_gain}, {"penalty", c.penalty},
+                       {"significance", c.significance}, {"estimate", c.estimate}, {"sigma", c.sigma},
+                       {"explains", c.explains(o.min_significance)}, {"rmse_pos_h_m", c.rmse_pos_h_m}});
+    }
+    md << "\n";
+    rounds.push_back({{"model", effect_list(round.model)}, {"found", round.found}, {"candidates", cands}});
+  }
+  j["rounds"] = rounds;
+  nlohmann::json missing = nlohmann::json::array();
+  for (est::Effect e : d.missing) missing.push_back(est::kEffectNames[static_cast<std::size_t>(e)]);
+  j["missing_effects"] = missing;
+  md << "## Conclusion\n\n```\n" << diagnosis_summary(o, d) << "```\n";
+  if (d.missing.empty()) {
+    md << "\nNo effect the EKF can estimate explains the misfit. Effects of the vocabulary it cannot estimate yet:\n"
+          "`accel_misalign`, `gyro_misalign` and `gyro_g_sensitivity` (misfit in turns and climbs, velocity first);\n"
+          "a magnetometer misfit that changes with heading beyond soft iron (a field that moves with the motors).\n";
+  }
+  if (!d.rounds.empty()) {
+    j["before"] = {{"rmse_pos_h_m", d.rounds.front().rmse_pos_h_m}, {"nll", d.rounds.front().stats.total_nll()}};
+    j["after"] = {{"rmse_pos_h_m", d.rounds.back().rmse_pos_h_m}, {"nll", d.rounds.back().stats.total_nll()},
+                  {"effects", effect_list(d.rounds.back().model)}};
+  }
+  std::ofstream js(o.out_dir + "/diagnosis.json");
+  js << j.dump(2) << "\n";
+  if (!md || !js) {
+    error = o.out_dir + ": writing report.md / diagnosis.json failed";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace sinu::diagnose

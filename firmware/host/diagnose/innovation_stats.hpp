@@ -1,0 +1,52 @@
+#pragma once
+// What the innovations say about a model: per aiding source, the Gaussian
+// negative log-likelihood of the innovations under the filter's own
+// predicted sigmas, NIS per component, and the rejections. Two runs of the
+// same data with different state sets are compared through the likelihood:
+// the model that predicts the measurements better has the lower NLL.
+// Per flight phase too, so a user sees *where* the model fails.
+#include <array>
+#include <cstdint>
+
+#include "firmware/host/diagnose/flight_phase.hpp"
+#include "firmware/host/replay/replay_runner.hpp"
+
+namespace sinu::diagnose {
+
+inline constexpr std::size_t kSources = 3;
+inline constexpr std::array<const char*, kSources> kSourceNames = {"gnss_position", "gnss_velocity", "magnetometer"};
+
+struct ComponentStats {
+  std::uint64_t count = 0;
+  double nll = 0.0;        // sum of 0.5 (y^2 / s^2 + 2 ln s)  [ln(2 pi) terms dropped]
+  double z2_sum = 0.0;     // sum of y^2 / s^2 (NIS per component; expected 1 each)
+  std::uint64_t rejected = 0;
+  double mean_z() const { return count ? z_sum / static_cast<double>(count) : 0.0; }
+  double nis() const { return count ? z2_sum / static_cast<double>(count) : 0.0; }
+  double z_sum = 0.0;      // sum of y / s (a bias shows as a mean far from 0)
+  void add(double y, double s, bool accepted);
+};
+
+struct InnovationStats {
+  std::array<ComponentStats, kSources> source{};
+  std::array<std::array<ComponentStats, kPhaseCount>, kSources> by_phase{};
+  double total_nll() const;
+};
+
+/// Scores a replay's innovations while it runs: the flight phase from the
+/// solution (yaw rate, vertical speed, acceleration and speed over the last
+/// 0.1 s), each innovation component against its predicted sigma.
+class InnovationStatsListener final : public replay::ReplayListener {
+ public:
+  void on_nav(const est::NavOutput& out) override;
+  void on_innovation(const est::InnovationRecord& rec) override;
+  const InnovationStats& stats() const { return stats_; }
+
+ private:
+  InnovationStats stats_;
+  Phase phase_ = Phase::Straight;
+  bool have_prev_ = false;
+  double prev_t_s_ = 0.0, prev_yaw_deg_ = 0.0, prev_speed_m_s_ = 0.0;
+};
+
+}  // namespace sinu::diagnose

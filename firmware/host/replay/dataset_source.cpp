@@ -1,0 +1,74 @@
+#include "firmware/host/replay/dataset_source.hpp"
+
+#include "firmware/host/dataset/imu_csv.hpp"
+
+namespace sinu::replay {
+
+bool DatasetSource::open(const std::string& dir, std::string& error) {
+  paths_ = dataset::DatasetPaths{dir};
+  if (!imu_.open(paths_.imu())) {
+    error = imu_.error().to_string();
+    return false;
+  }
+  has_gps_ = paths_.has_gps();
+  if (has_gps_ && !gps_.open(paths_.gps())) {
+    error = gps_.error().to_string();
+    return false;
+  }
+  return true;
+}
+
+bool DatasetSource::run(ReplayFeed& feed, std::string& error) {
+  drivers::GpsFix fix;
+  dataset::ReadStatus gps_st = has_gps_ ? gps_.next(fix) : dataset::ReadStatus::End;
+  dataset::CsvRow row;
+  dataset::ReadStatus st;
+  while ((st = imu_.next(row)) == dataset::ReadStatus::Row) {
+    const dataset::ImuRow r{row};
+    if (!r.has_accel() || !r.has_gyro()) {
+      ++incomplete_rows_;
+      continue;
+    }
+    est::ImuSample s;
+    s.t_s = r.t_s();
+    const auto f = r.specific_force_b_m_s2();
+    const auto g = r.angular_rate_b_rad_s();
+    s.specific_force_b_m_s2 = {f[0], f[1], f[2]};
+    s.angular_rate_b_rad_s = {g[0], g[1], g[2]};
+    s.has_mag = r.has_mag();
+    if (s.has_mag) {
+      const auto m = r.mag_b_uT();
+      s.mag_b_uT = {m[0], m[1], m[2]};
+    }
+    s.has_temp = r.has_temp();
+    s.temp_degC = s.has_temp ? r.temp_degC() : 0.0;
+    while (gps_st == dataset::ReadStatus::Row && fix.arrival_s <= s.t_s) {
+      feed.on_fix(fix);
+      gps_st = gps_.next(fix);
+    }
+    feed.on_imu(s);
+  }
+  if (st == dataset::ReadStatus::Error) {
+    error = imu_.error().to_string();
+    return false;
+  }
+  if (gps_st == dataset::ReadStatus::Error) {
+    error = gps_.error().to_string();
+    return false;
+  }
+  return true;
+}
+
+SourceCounters DatasetSource::counters() const {
+  SourceCounters c;
+  c.incomplete_rows = incomplete_rows_;
+  c.corrupt_sentences = has_gps_ ? gps_.corrupt() : 0;
+  c.time_anomalies = imu_.time_anomalies();
+  c.non_finite_rows = imu_.non_finite_rows();
+  if (!imu_.first_anomaly().message.empty()) c.first_anomaly = imu_.first_anomaly().to_string();
+  return c;
+}
+
+std::string DatasetSource::default_truth() const { return paths_.has_truth() ? paths_.truth() : std::string(); }
+
+}  // namespace sinu::replay

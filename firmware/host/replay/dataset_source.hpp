@@ -1,0 +1,29 @@
+#pragma once
+// A dataset folder as a replay source: imu.csv rows merged with the fixes
+// assembled from gps.nmea, by arrival time.
+#include "firmware/host/dataset/csv_table.hpp"
+#include "firmware/host/dataset/dataset_paths.hpp"
+#include "firmware/host/dataset/imu_csv.hpp"
+#include "firmware/host/dataset/nmea_log.hpp"
+#include "firmware/host/replay/replay_source.hpp"
+
+namespace sinu::replay {
+
+class DatasetSource final : public ReplaySource {
+ public:
+  /// Opens imu.csv and, when present, gps.nmea. False with `error` (file:line).
+  bool open(const std::string& dir, std::string& error);
+  bool run(ReplayFeed& feed, std::string& error) override;
+  SourceCounters counters() const override;
+  std::string default_truth() const override;
+
+ private:
+  dataset::DatasetPaths paths_;
+  // A live stream's glitches survive a replay: the navigator drops, counts and flags them.
+  dataset::CsvReader imu_{dataset::kImuSchema, dataset::CsvLeniency{true, true}};
+  dataset::GpsLogReader gps_;
+  bool has_gps_ = false;
+  std::uint64_t incomplete_rows_ = 0;
+};
+
+}  // namespace sinu::replay

@@ -1,0 +1,63 @@
+#pragma once
+// What a replay found, as values: the run (model, states, denoiser), the
+// final effect and sensor-error estimates, the comparison with truth, the
+// innovation statistics, the health and every counter. `sinu replay` prints
+// it and writes summary.json from it; `sinu diagnose` compares candidate
+// models with it. The streams (each solution, each innovation) go to
+// ReplayListeners while the replay runs.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "estimator/nav/navigator.hpp"
+#include "firmware/host/replay/nav_metrics.hpp"
+#include "firmware/host/replay/replay_source.hpp"
+
+namespace sinu::replay {
+
+struct EffectEstimate {
+  est::Effect effect{};
+  std::vector<double> estimate, sigma;  // per component
+};
+
+struct GnssFeedCounters {
+  std::uint64_t epochs = 0, used = 0, dropped_outage = 0, dropped_period = 0;
+};
+
+enum class HealthStatus { Ok, Reset, LostAndRecovered, Lost, NotAligned };
+const char* health_status_name(HealthStatus s);  // ok, reset, lost_and_recovered, lost, not_aligned
+
+struct ReplayResult {
+  std::string dataset;
+  std::string denoiser = "none";  // "db4:3" or "none"
+  int states = 0;
+  std::vector<EffectEstimate> effects;  // the effects switched on at the end, in layout order
+  std::array<double, est::kSensorAxes> sensor_error{}, sensor_error_sigma{};
+  std::uint64_t imu_samples = 0;
+  double duration_s = 0.0;
+  bool aligned = false;
+  double aligned_at_s = 0.0;      // time of the first solution (valid when aligned)
+  std::uint32_t last_flags = 0;   // nav_flag bits of the last solution
+  bool has_truth = false;
+  NavMetrics metrics;             // against truth.csv; NIS per source
+  est::NavCounters counters;
+  GnssFeedCounters gnss;
+  SourceCounters source;
+  double gnss_velocity_sigma_m_s = 0.0, mag_sigma_uT = 0.0;  // in use at the end (learnt or fixed)
+  std::string note;               // what the user must know ("" if nothing): truncated recording, dropped rows
+
+  HealthStatus health() const;
+  /// RMSE against truth; NaN without truth points.
+  double rmse_pos_h_m() const;
+  double rmse_pos_v_m() const;
+  double rmse_vel_m_s() const;
+  double rmse_att_deg() const;
+  double gnss_rmse_pos_h_m() const;
+  double gnss_rmse_pos_v_m() const;
+  /// RMS over the scored outages of the maximum horizontal drift; NaN if none was scored.
+  double outage_drift_rms_m() const;
+  const EffectEstimate* effect(est::Effect e) const;
+};
+
+}  // namespace sinu::replay

@@ -1,0 +1,80 @@
+#include "firmware/host/sim/imu_sensor.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sinu::sim {
+
+namespace {
+
+double quantise(double x, double step) { return step > 0.0 ? std::round(x / step) * step : x; }
+
+Eigen::Matrix3d gain(const std::optional<Eigen::Vector3d>& scale_ppm, const std::optional<Eigen::Matrix3d>& mis) {
+  Eigen::Matrix3d s = Eigen::Matrix3d::Identity();
+  if (scale_ppm) s.diagonal() += *scale_ppm * 1e-6;
+  const Eigen::Matrix3d m = Eigen::Matrix3d::Identity() + mis.value_or(Eigen::Matrix3d::Zero());
+  return s * m;
+}
+
+}  // namespace
+
+void TriadErrors::init(const TriadErrorModel& m, double dt, Rng& rng) {
+  model_ = m;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const AxisErrorModel& a = m.axis[i];
+    white_sigma_[i] = a.white_noise_density / std::sqrt(dt);
+    gm_[i].init(a.gm_sigma, a.gm_tau_s, dt, rng);
+    periodic_[i].init(a.periodic_sigma, a.periodic_period_s, a.periodic_damping, dt, rng);
+    rrw_[i].init(a.rate_random_walk, dt);
+  }
+}
+
+Eigen::Vector3d TriadErrors::step(Rng& rng) {
+  Eigen::Vector3d e;
+  for (std::size_t i = 0; i < 3; ++i)
+    e[static_cast<Eigen::Index>(i)] = model_.axis[i].turn_on_bias + white_sigma_[i] * rng.normal() +
+                                      gm_[i].step(rng) + periodic_[i].step(rng) + rrw_[i].step(rng);
+  return e;
+}
+
+Eigen::Vector3d TriadErrors::measure(const Eigen::Vector3d& v) const {
+  Eigen::Vector3d q;
+  const double fs = model_.full_scale;
+  for (Eigen::Index i = 0; i < 3; ++i) {
+    const double x = quantise(v[i], model_.quantisation_step);
+    q[i] = fs > 0.0 ? std::clamp(x, -fs, fs) : x;
+  }
+  return q;
+}
+
+ImuSensor::ImuSensor(const ImuErrorModel& model, const Effects& fx, const Eigen::Vector3d& earth_field_n_uT, double dt,
+                     Rng& noise_rng)
+    : model_(model), rng_(noise_rng) {
+  accel_.init(model.accel, dt, rng_);
+  gyro_.init(model.gyro, dt, rng_);
+  accel_gain_ = gain(fx.accel_scale_ppm, fx.accel_misalign_rad);
+  gyro_gain_ = gain(fx.gyro_scale_ppm, fx.gyro_misalign_rad);
+  g_sensitivity_ = fx.gyro_g_sensitivity_rad_s_per_m_s2.value_or(Eigen::Matrix3d::Zero());
+  soft_iron_ = fx.mag_soft_iron.value_or(Eigen::Matrix3d::Identity());
+  accel_temp_k_ = fx.accel_temp_bias_m_s2_per_degC.value_or(Eigen::Vector3d::Zero());
+  gyro_temp_k_ = fx.gyro_temp_bias_rad_s_per_degC.value_or(Eigen::Vector3d::Zero());
+  hard_iron_ = fx.mag_hard_iron_uT.value_or(Eigen::Vector3d::Zero());
+  earth_field_n_uT_ = earth_field_n_uT;
+}
+
+ImuOutput ImuSensor::sample(const Eigen::Vector3d& f_b, const Eigen::Vector3d& w_b, const Eigen::Matrix3d& C_nb,
+                            double temp_degC) {
+  const double dT = temp_degC - kTempBiasReference_degC;
+  ImuOutput out;
+  out.specific_force_b_m_s2 = accel_.measure(accel_gain_ * f_b + accel_.step(rng_) + accel_temp_k_ * dT);
+  out.angular_rate_b_rad_s =
+      gyro_.measure(gyro_gain_ * w_b + g_sensitivity_ * f_b + gyro_.step(rng_) + gyro_temp_k_ * dT);
+  const Eigen::Vector3d m = soft_iron_ * (C_nb.transpose() * earth_field_n_uT_) + hard_iron_;
+  const double mag_sigma = model_.mag.white_noise_sigma_uT, mag_q = model_.mag.quantisation_step_uT;
+  for (Eigen::Index i = 0; i < 3; ++i) out.mag_b_uT[i] = quantise(m[i] + mag_sigma * rng_.normal(), mag_q);
+  out.temp_degC =
+      quantise(temp_degC + model_.temp.white_noise_sigma_degC * rng_.normal(), model_.temp.quantisation_step_degC);
+  return out;
+}
+
+}  // namespace sinu::sim

@@ -1,0 +1,51 @@
+#pragma once
+// Seeded random sequence of flight manoeuvres: a minute still on the ground,
+// take-off roll, climb-out, then straight legs, coordinated turns (bank 15-35
+// deg), loiter circles, figure-eights, climbs and descents (100-300 m above
+// ground), speed changes (33-47 m/s around the paper's 40 m/s = 145 km/h),
+// and a final descent. Each manoeuvre is a few primitives; a primitive ramps
+// the controls to new targets and holds them.
+#include <array>
+#include <cstddef>
+
+#include "firmware/host/sim/flight_controls.hpp"
+#include "firmware/host/sim/rng.hpp"
+
+namespace sinu::sim {
+
+struct Primitive {
+  double ramp_s = 1.0;   // cosine ramp of every control to its target
+  double hold_s = 0.0;   // then hold
+  double speed_m_s = 0.0, gamma_rad = 0.0, bank_rad = 0.0, alpha_rad = 0.0;
+  const char* name = "";
+};
+
+/// What the planner needs to know when it chooses the next manoeuvre.
+struct PlannerInput {
+  double t_s = 0.0;          // now
+  double end_s = 0.0;        // end of the flight
+  double height_agl_m = 0.0;  // above the ground at the take-off point
+};
+
+class ManoeuvrePlanner {
+ public:
+  explicit ManoeuvrePlanner(Rng& rng) : rng_(rng) {}
+  /// The next primitive to fly, given the current state.
+  Primitive next(const PlannerInput& in);
+
+ private:
+  void plan(const PlannerInput& in);
+  void push(const Primitive& p);
+  void plan_turn(double bank_rad, double turn_rad);
+  void plan_height_change(double dh_m);
+  double final_descent_s(double agl_m) const;
+
+  enum class Phase { Ground, TakeoffRoll, Climbout, Cruise, FinalDescent, Done };
+  Rng& rng_;
+  Phase phase_ = Phase::Ground;
+  double speed_m_s_ = 0.0;  // speed target of the last primitive queued
+  std::array<Primitive, 8> queue_{};
+  std::size_t head_ = 0, size_ = 0;
+};
+
+}  // namespace sinu::sim

@@ -1,0 +1,44 @@
+#pragma once
+// sinu simulate: a flight (imu.csv, gps.nmea, truth.csv, meta.json) or a
+// static bench session (imu.csv, meta.json) in the dataset folder format,
+// and the hidden truth (error-model parameters, effects) as JSON elsewhere.
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "firmware/host/dataset/diagnostic.hpp"
+#include "firmware/host/sim/effects.hpp"
+#include "firmware/host/sim/gps_receiver.hpp"
+#include "firmware/host/sim/imu_error_model.hpp"
+
+namespace sinu::sim {
+
+enum class SimMode { Flight, Static };
+
+struct SimOptions {
+  SimMode mode = SimMode::Flight;
+  std::string out_dir;
+  std::uint64_t seed = 1;
+  double duration_s = 1800.0;
+  double imu_rate_hz = 40.0;
+  double gps_rate_hz = 5.0;
+  Effects effects;
+  /// Replaces the drawn default model (tests: ideal_imu_error_model()).
+  std::optional<ImuErrorModel> error_model;
+  GpsErrorModel gps;
+  /// Internal trajectory rate is at least this [Hz] (a multiple of the IMU rate).
+  double min_internal_rate_hz = 800.0;
+};
+
+struct SimResult {
+  nlohmann::json hidden;  // everything the dataset does not say (schema: docs/simulation.md)
+  std::uint64_t imu_rows = 0, gps_sentences = 0, corrupted_sentences = 0;
+};
+
+/// Checks option ranges; false with a message naming the option.
+bool validate_options(const SimOptions& o, std::string& why);
+/// Writes the dataset into o.out_dir (created if needed).
+bool run_simulation(const SimOptions& o, SimResult& result, dataset::Diagnostic& err);
+
+}  // namespace sinu::sim
