@@ -106,10 +106,11 @@ TEST_F(ReplayRecording, RawAndTheDatasetItConvertsToGiveTheSameBits) {
 
 // A 1 Hz receiver: an epoch the fix assembler closes only when the next one
 // starts (the first, and those after a corrupt sentence) reaches the board
-// loop 1 s after its arrival, beyond the navigator's 0.3 s horizon. The
-// recording source's reorder window still feeds it where a dataset replay
-// does (without the window, nav.csv differs and one fewer fix is accepted).
-TEST(ReplayRecordingSlowGps, OneHertzGpsGivesTheSameBitsToo) {
+// loop 1 s after its arrival, beyond the navigator's horizon. A recording
+// replays what the board did: those fixes are late (counted, not fused),
+// where a dataset replay, which knows every arrival up front, fuses them.
+// Everything else is the same epochs, and the solutions agree.
+TEST(ReplayRecordingSlowGps, OneHertzGpsEpochsCompletedLateAreLateAsOnTheBoard) {
   TempDir tmp;
   const Flight f = make_flight(tmp, 300, 3, "1");
   const std::string a = tmp.file("a"), b = tmp.file("b");
@@ -117,13 +118,14 @@ TEST(ReplayRecordingSlowGps, OneHertzGpsGivesTheSameBitsToo) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   ASSERT_EQ(replay(f.dir2, b, f.dir + "/truth.csv").exit_code, 0);
-  EXPECT_EQ(read_file(a + "/nav.csv"), read_file(b + "/nav.csv"));
-  EXPECT_EQ(read_file(a + "/innovations.csv"), read_file(b + "/innovations.csv"));
-  nlohmann::json sa = read_json(a + "/summary.json"), sb = read_json(b + "/summary.json");
+  const nlohmann::json sa = read_json(a + "/summary.json"), sb = read_json(b + "/summary.json");
   EXPECT_GT(sa["gnss"]["used"].get<int>(), 200);
-  sa.erase("dataset");
-  sb.erase("dataset");
-  EXPECT_EQ(sa.dump(), sb.dump());
+  EXPECT_EQ(sa["gnss"]["used"], sb["gnss"]["used"]) << "the same epochs reach the navigator";
+  EXPECT_EQ(sb["gnss"]["late"].get<int>(), 0);
+  EXPECT_GE(sa["gnss"]["late"].get<int>(), 1) << "the first epoch completes a second late";
+  EXPECT_LE(sa["gnss"]["late"].get<int>(), 5) << "only epochs closed by the next one (first, after corruption)";
+  // One or two missing 1 Hz fixes move the solution by much less than its error (~1 m).
+  EXPECT_NEAR(sa["rmse"]["pos_h_m"].get<double>(), sb["rmse"]["pos_h_m"].get<double>(), 0.1);
 }
 
 // The real drive (100 Hz IMU, 4 Hz GPS from a real receiver): converted to a

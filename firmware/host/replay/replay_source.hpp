@@ -1,11 +1,12 @@
 #pragma once
 // Where `sinu replay` gets its samples: a dataset folder (imu.csv, gps.nmea)
 // or a raw HAL recording run through the board loop and the drivers
-// (HAL -> drivers -> estimator). Both feed the navigator the same stream:
-// IMU samples in time order and, before each sample, every GPS fix that
-// had arrived by the sample's time (fixes arriving after the last sample
-// are not fed). A recording converted to a dataset (`sinu convert RAW DIR`)
-// therefore replays to the same bits as the recording itself.
+// (HAL -> drivers -> estimator). A dataset feeds each GPS fix before the
+// first IMU sample at or after its arrival; a recording feeds it when the
+// board completed its epoch, as `sinu fly` did. Within the navigator's
+// horizon the order makes no difference, so a recording converted from a
+// dataset (`sinu convert`) replays to the same bits as the dataset it
+// converts back to.
 #include <cstdint>
 #include <memory>
 #include <string>
