@@ -124,7 +124,15 @@ ImuRead Icm20948::fail() {
   return ImuRead::Error;
 }
 
-ImuRead Icm20948::read(hal::TimeNs edge_ns, ImuSample& out) {
+ImuRead Icm20948::read(hal::TimeNs edge_ns, ImuSample& out) { return read_sample(edge_ns, out, false); }
+
+ImuRead Icm20948::poll(hal::TimeNs now_ns, ImuSample& out) {
+  const ImuRead r = read_sample(now_ns, out, true);
+  if (r == ImuRead::Sample) ++counters_.polled;
+  return r;
+}
+
+ImuRead Icm20948::read_sample(hal::TimeNs edge_ns, ImuSample& out, bool polled) {
   if (!ready_) {
     if (ever_tried_ && clock_.now_ns() - last_init_ns_ < config_.reinit_backoff_ns) return ImuRead::Error;
     if (!init()) return ImuRead::Error;
@@ -144,7 +152,7 @@ ImuRead Icm20948::read(hal::TimeNs edge_ns, ImuSample& out) {
       return fail();
   }
   if (!(status[0] & b::INT1_RAW_DATA_0_RDY)) {
-    ++counters_.no_new_data;
+    ++(polled ? counters_.polls_empty : counters_.no_new_data);
     return ImuRead::NoData;
   }
   std::array<std::uint8_t, icm20948::kDataBytes> raw{};

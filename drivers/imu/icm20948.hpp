@@ -70,6 +70,8 @@ struct Icm20948Counters {
   std::uint64_t fifo_overflow = 0;   // FIFO overflow flag seen (FIFO reset, config re-checked)
   std::uint64_t mag_overflow = 0;    // AK09916 HOFL: magnetometer sample dropped
   std::uint64_t mag_errors = 0;      // magnetometer transfer failed: sample without mag
+  std::uint64_t polled = 0;          // samples read by poll() (no data-ready edge)
+  std::uint64_t polls_empty = 0;     // polls that found no new sample (expected: polls run faster than the ODR)
 };
 
 enum class ImuRead { Sample, NoData, Error };
@@ -81,6 +83,10 @@ class Icm20948 {
   bool init();
   /// Reads the sample announced by a data-ready edge at `edge_ns`.
   ImuRead read(hal::TimeNs edge_ns, ImuSample& out);
+  /// Without edges (the data-ready line broke): reads a sample if the chip
+  /// has a new one (INT_STATUS_1), stamped `now_ns`, the poll's time (up to
+  /// the polling period later than the conversion). NoData is normal here.
+  ImuRead poll(hal::TimeNs now_ns, ImuSample& out);
   bool initialised() const { return ready_; }
   const Icm20948Counters& counters() const { return counters_; }
   /// Actual output data rate after the divider's rounding.
@@ -95,6 +101,7 @@ class Icm20948 {
   bool configure();
   bool configure_magnetometer();
   ImuRead fail();
+  ImuRead read_sample(hal::TimeNs t_ns, ImuSample& out, bool polled);
   void decode(const std::uint8_t* raw, const std::uint8_t* mag, bool mag_ok, ImuSample& out) const;
 
   hal::I2cBus& bus_;

@@ -200,6 +200,7 @@ void Navigator::process(const ImuSample& s) {
   fuse_vehicle_constraints(s, r1);
   update_health(s.t_s, dt);
   prev_ = s;
+  out_.angular_rate_b_rad_s = r1.angular_rate_b_rad_s;
   emit();
 }
 

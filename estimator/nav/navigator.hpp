@@ -111,6 +111,7 @@ struct NavigatorConfig {
 struct NavOutput {
   NavState nav;
   Eigen::Matrix<double, 9, 9> P_nav;  // pos, vel, att block, as of the last covariance prediction (<= covariance_period_s old)
+  Eigen::Vector3d angular_rate_b_rad_s = Eigen::Vector3d::Zero();  // the sample's rate, sensor errors removed (zero at alignment)
   std::array<double, kSensorAxes> sensor_error{}, sensor_error_sigma{};
   std::uint32_t flags = 0;            // nav_flag bits: state now, events since the previous output
   // Largest component test ratio of the latest update of each source (PX4 style: > 1 rejects).

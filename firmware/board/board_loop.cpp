@@ -5,7 +5,18 @@
 namespace sinu::board {
 
 BoardLoop::BoardLoop(const BoardDevices& devices, const drivers::Icm20948Config& imu_config)
-    : dev_(devices), imu_(devices.i2c, devices.clock, imu_config) {}
+    : dev_(devices),
+      imu_(devices.i2c, devices.clock, imu_config),
+      poll_period_ns_(static_cast<hal::TimeNs>(0.5e9 / imu_config.odr_hz)) {}
+
+void BoardLoop::poll_imu(BoardSink& sink, hal::TimeNs now_ns) {
+  if (!polling_) {
+    polling_ = true;
+    ++counters_.polling_starts;
+  }
+  drivers::ImuSample sample;
+  if (imu_.poll(now_ns, sample) == drivers::ImuRead::Sample) sink.on_imu(sample);
+}
 
 void BoardLoop::drain_serial(BoardSink& sink) {
   std::array<std::uint8_t, 256> buffer{};
@@ -29,15 +40,21 @@ void BoardLoop::run(BoardSink& sink, const std::atomic<bool>* stop, hal::TimeNs 
   drivers::ImuSample sample;
   while (!(stop && stop->load())) {
     hal::TimeNs edge_ns = 0;
-    const hal::EdgeStatus st = dev_.drdy.wait_rising(kEdgeTimeoutNs, edge_ns);
+    const hal::EdgeStatus st = dev_.drdy.wait_rising(polling_ ? poll_period_ns_ : kEdgeTimeoutNs, edge_ns);
     if (st == hal::EdgeStatus::Closed) break;
     if (st == hal::EdgeStatus::Edge) {
       ++counters_.edges;
+      polling_ = false;  // edges are back
       if (imu_.read(edge_ns, sample) == drivers::ImuRead::Sample) sink.on_imu(sample);
+    } else if (st == hal::EdgeStatus::OtherInput) {
+      ++counters_.serial_wakeups;
     } else if (st == hal::EdgeStatus::Timeout) {
       ++counters_.edge_timeouts;
-    } else {
+      poll_imu(sink, edge_ns);
+    } else {  // an error is a timeout that came at once: poll, then wait as a timeout would have
       ++counters_.edge_errors;
+      poll_imu(sink, edge_ns);
+      dev_.clock.sleep_until_ns(edge_ns + poll_period_ns_);
     }
     drain_serial(sink);
     const hal::TimeNs now = dev_.clock.now_ns();

@@ -1,9 +1,15 @@
 #pragma once
 // The board's sensor loop, the same on the companion computer, in a replay
-// and in a conversion: wait for the IMU's data-ready edge, read the sample,
-// then drain the GPS serial port through the NMEA stream. Everything leaves
-// through a BoardSink with HAL time stamps; nothing here knows where the
-// devices are (Linux, replay, emulator).
+// and in a conversion: wait for the IMU's data-ready edge (or GPS bytes),
+// read the sample, then drain the GPS serial port through the NMEA stream.
+// Everything leaves through a BoardSink with HAL time stamps; nothing here
+// knows where the devices are (Linux, replay, emulator).
+//
+// Without edges (the INT line broke, the GPIO failed) the loop falls back to
+// polling: after a wait times out it asks the IMU whether it has a new
+// sample, and waits half a sample period before asking again, until edges
+// come back. Polled samples carry the poll's time (up to that half period
+// late); they are counted (Icm20948Counters::polled).
 #include <atomic>
 #include <cstdint>
 #include <string_view>
@@ -37,6 +43,8 @@ struct BoardDevices {
 
 struct BoardCounters {
   std::uint64_t edges = 0, edge_timeouts = 0, edge_errors = 0;
+  std::uint64_t polling_starts = 0;  // times the loop fell back to polling
+  std::uint64_t serial_wakeups = 0;  // waits ended by GPS bytes
   std::uint64_t serial_bytes = 0, serial_errors = 0;
 };
 
@@ -51,14 +59,18 @@ class BoardLoop {
   const drivers::Icm20948& imu() const { return imu_; }
   drivers::NmeaStreamCounters gps_counters() const { return nmea_.counters(); }
   const BoardCounters& counters() const { return counters_; }
+  bool polling() const { return polling_; }
 
  private:
   void drain_serial(BoardSink& sink);
+  void poll_imu(BoardSink& sink, hal::TimeNs now_ns);
 
   BoardDevices dev_;
   drivers::Icm20948 imu_;
   drivers::NmeaStream nmea_;
   BoardCounters counters_;
+  hal::TimeNs poll_period_ns_;
+  bool polling_ = false;
 };
 
 }  // namespace sinu::board

@@ -1,6 +1,7 @@
 #include "firmware/board/nav_unit.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include "drivers/imu/icm20948_registers.hpp"
@@ -67,7 +68,50 @@ bool NavUnit::push_fix(const drivers::GpsFix& fix) {
   est::GnssObservation z;
   if (!observation(fix, z)) return false;
   nav_->push_gnss(z);
+  have_fix_ = true;
+  fix_arrival_s_ = fix.arrival_s;
+  fix_has_utc_ = fix.date.has_value();
+  if (fix_has_utc_) fix_utc_ms_ = utc_epoch_ms(*fix.date, fix.utc_ms);
+  geoid_sep_m_ = fix.geoid_sep_m.value_or(0.0);
+  satellites_ = fix.sats.value_or(0);
+  hdop_ = fix.hdop.value_or(99.99);
   return true;
+}
+
+std::int64_t utc_epoch_ms(const drivers::UtcDate& d, drivers::UtcMs time_of_day_ms) {
+  // Days from 1970-01-01 of a proleptic Gregorian date (the era algorithm:
+  // 400-year eras of 146097 days, years starting in March).
+  const int y = d.year - (d.month <= 2 ? 1 : 0);
+  const int era = (y >= 0 ? y : y - 399) / 400;
+  const int yoe = y - era * 400;
+  const int mp = (d.month + 9) % 12;
+  const int doy = (153 * mp + 2) / 5 + d.day - 1;
+  const int doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+  const std::int64_t days = std::int64_t{era} * 146097 + doe - 719468;
+  return days * 86'400'000 + time_of_day_ms;
+}
+
+void NavUnit::solution(const est::NavOutput& o, NavSolution& sol) const {
+  constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+  sol.t_s = o.nav.t_s;
+  sol.aligned = (o.flags & est::nav_flag::kAligned) != 0;
+  sol.lat_deg = o.nav.lat_rad * kRadToDeg;
+  sol.lon_deg = o.nav.lon_rad * kRadToDeg;
+  sol.h_ellipsoid_m = o.nav.h_m;
+  sol.v_ned_m_s = o.nav.v_n_m_s;
+  sol.q_nb = o.nav.q_nb;
+  sol.angular_rate_b_rad_s = o.angular_rate_b_rad_s;
+  sol.P_nav = o.P_nav;
+  sol.flags = o.flags;
+  sol.geoid_sep_m = geoid_sep_m_;
+  sol.satellites = satellites_;
+  sol.hdop = hdop_;
+  sol.has_utc = have_fix_ && fix_has_utc_;
+  if (sol.has_utc) {
+    // The fix was valid at its arrival less the latency (estimated, or as configured).
+    const double latency = nav_->filter().gps_latency_s();
+    sol.utc_ms = fix_utc_ms_ + std::llround((o.nav.t_s - (fix_arrival_s_ - latency)) * 1000.0);
+  }
 }
 
 }  // namespace sinu::board

@@ -15,6 +15,7 @@
 #include "drivers/imu/icm20948.hpp"
 #include "estimator/nav/navigator.hpp"
 #include "estimator/prefilter/imu_prefilter.hpp"
+#include "firmware/board/nav_solution.hpp"
 #include "firmware/board/nav_unit_config.hpp"
 
 namespace sinu::board {
@@ -42,6 +43,10 @@ class NavUnit {
   bool push_fix(const drivers::GpsFix& fix);
   /// End of data: processes what the navigator still holds.
   void flush() { nav_->flush(); }
+  /// What the outputs need of a navigator output: the solution in output
+  /// units, its UTC (from the last fix's time of validity), the receiver's
+  /// geoid separation, satellites and HDOP.
+  void solution(const est::NavOutput& out, NavSolution& sol) const;
 
   const est::Navigator& navigator() const { return *nav_; }
   const NavUnitConfig& config() const { return cfg_; }
@@ -54,6 +59,14 @@ class NavUnit {
   DenoiserSpec denoiser_;
   std::unique_ptr<est::ImuPrefilter> prefilter_;
   std::unique_ptr<est::Navigator> nav_;
+  // The last fix with a position, for the solution's time and receiver fields.
+  bool have_fix_ = false, fix_has_utc_ = false;
+  std::int64_t fix_utc_ms_ = 0;
+  double fix_arrival_s_ = 0.0, geoid_sep_m_ = 0.0, hdop_ = 99.99;
+  int satellites_ = 0;
 };
+
+/// Milliseconds since 1970-01-01 UTC of a date and a time of day.
+std::int64_t utc_epoch_ms(const drivers::UtcDate& date, drivers::UtcMs time_of_day_ms);
 
 }  // namespace sinu::board

@@ -22,7 +22,7 @@ namespace {
 
 struct ConvertOptions {
   std::string in, out;
-  ImuOptions imu;
+  BoardOptions imu;
 };
 
 /// Counts what the loop delivers; the recording taps do the writing.
@@ -107,7 +107,7 @@ int raw_to_dataset(const ConvertOptions& o, const drivers::Icm20948Config& cfg) 
 int convert(const ConvertOptions& o) {
   drivers::Icm20948Config cfg;
   std::string error;
-  if (!o.imu.to_config(cfg, error)) {
+  if (!o.imu.imu_config(cfg, error)) {
     std::fprintf(stderr, "sinu convert: %s\n", error.c_str());
     return kExitUsage;
   }
@@ -126,7 +126,7 @@ void add_convert_command(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand("convert", "Convert a raw HAL recording to a dataset folder and back");
   cmd->add_option("IN", opts->in, "A raw recording (file) or a dataset folder")->required();
   cmd->add_option("OUT", opts->out, "The dataset folder or raw recording to write")->required();
-  opts->imu.add_to(*cmd);
+  opts->imu.add_imu(*cmd);
   cmd->callback([&action, opts] { action = [opts] { return convert(*opts); }; });
 }
 

@@ -47,7 +47,7 @@ void NavigationCliOptions::add_to(CLI::App& sub) {
       ->capture_default_str();
   sub.add_flag("--no-mag", [this](std::int64_t) { opt.unit.use_mag = false; },
                "Do not fuse the magnetometer even when imu.csv has one");
-  imu.add_to(sub);
+  imu.add_imu(sub);
 }
 
 bool NavigationCliOptions::resolve(std::string& error) {
@@ -71,8 +71,8 @@ bool NavigationCliOptions::resolve(std::string& error) {
   // A dataset's full scales only when given (a recording's come from its driver settings).
   if (app && app->count("--gps-vel-sigma")) opt.unit.adapt_velocity_noise = false;
   if (app && app->count("--mag-sigma")) opt.unit.adapt_mag_noise = false;
-  if (app && app->count("--accel-range")) opt.unit.accel_range_m_s2 = imu.accel_g * 9.80665;
-  if (app && app->count("--gyro-range")) opt.unit.gyro_range_rad_s = imu.gyro_dps * 3.14159265358979323846 / 180.0;
+  if (imu.given("--accel-range")) opt.unit.accel_range_m_s2 = imu.values.imu.accel_range_g * 9.80665;
+  if (imu.given("--gyro-range")) opt.unit.gyro_range_rad_s = imu.values.imu.gyro_range_dps * 3.14159265358979323846 / 180.0;
   if (!lever_arm.empty()) {
     if (lever_arm.size() != 3) {
       error = "--lever-arm needs three numbers x,y,z [m]";
@@ -80,7 +80,7 @@ bool NavigationCliOptions::resolve(std::string& error) {
     }
     opt.unit.lever_arm_b_m = {lever_arm[0], lever_arm[1], lever_arm[2]};
   }
-  return imu.to_config(opt.imu, error);
+  return imu.imu_config(opt.imu, error);
 }
 
 }  // namespace sinu::cli

@@ -19,7 +19,7 @@ struct NavigationCliOptions {
   std::string without_effects;  // removed from them
   std::string vehicle = "air";
   std::vector<double> lever_arm;
-  ImuOptions imu;  // for a raw recording: the driver settings it was recorded with
+  BoardOptions imu;  // for a raw recording: the driver settings it was recorded with
   CLI::App* app = nullptr;
 
   NavigationCliOptions(std::string default_model, std::string default_effects)

@@ -98,6 +98,7 @@ SerialResult TermiosSerialPort::read(std::span<std::uint8_t> out, TimeNs timeout
   if (r == 0) return {};
   const ssize_t n = ::read(fd_, out.data(), out.size());
   if (n > 0) {
+    if (stamp_clock_) return {SerialStatus::Ok, static_cast<std::size_t>(n), stamp_clock_->now_ns()};
     timespec now{};
     ::clock_gettime(CLOCK_MONOTONIC, &now);  // the clock of MonotonicClock
     return {SerialStatus::Ok, static_cast<std::size_t>(n), TimeNs{now.tv_sec} * 1'000'000'000 + now.tv_nsec};

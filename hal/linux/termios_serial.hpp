@@ -21,11 +21,17 @@ class TermiosSerialPort final : public SerialPort {
   SerialResult read(std::span<std::uint8_t> out, TimeNs timeout_ns) override;
   SerialResult write(std::span<const std::uint8_t> bytes) override;
   const std::string& last_error() const { return last_error_; }
+  /// The descriptor, for a wait on several inputs (GpiodEdge::also_wake_on); -1 if closed.
+  int fd() const { return fd_; }
+  /// Time-stamps reads with `clock` instead of CLOCK_MONOTONIC (an emulated
+  /// board's clock); nullptr: back to CLOCK_MONOTONIC.
+  void stamp_with(Clock* clock) { stamp_clock_ = clock; }
 
  private:
   SerialResult fail(const char* what);
 
   int fd_ = -1;
+  Clock* stamp_clock_ = nullptr;
   std::string last_error_;
 };
 

@@ -10,12 +10,13 @@ const char* to_string(Kind k) {
     case Kind::SerialTx: return "serial_tx";
     case Kind::GpioEdge: return "gpio_edge";
     case Kind::SerialBaud: return "serial_baud";
+    case Kind::EdgeTimeout: return "edge_timeout";
   }
   return "unknown";
 }
 
 bool is_known(std::uint8_t kind) {
-  return kind >= static_cast<std::uint8_t>(Kind::I2cRead) && kind <= static_cast<std::uint8_t>(Kind::SerialBaud);
+  return kind >= static_cast<std::uint8_t>(Kind::I2cRead) && kind <= static_cast<std::uint8_t>(Kind::EdgeTimeout);
 }
 
 std::uint32_t crc32(std::span<const std::uint8_t> bytes, std::uint32_t crc) {

@@ -27,6 +27,7 @@ enum class Kind : std::uint8_t {
   SerialTx = 4,   // payload: port, bytes[n]
   GpioEdge = 5,   // payload: line; t_ns = the edge's kernel timestamp
   SerialBaud = 6, // payload: port, baud u32
+  EdgeTimeout = 7,// payload: line; t_ns = when the wait for an edge gave up (the loop then polls the IMU)
 };
 
 const char* to_string(Kind k);

@@ -51,10 +51,13 @@ SerialResult RecordingSerialPort::write(std::span<const std::uint8_t> bytes) {
 
 EdgeStatus RecordingGpioEdge::wait_rising(TimeNs timeout_ns, TimeNs& edge_time_ns) {
   const EdgeStatus s = inner_.wait_rising(timeout_ns, edge_time_ns);
-  if (s == EdgeStatus::Edge) {
-    const std::array<std::uint8_t, 1> payload{line_};
-    writer_.append(Kind::GpioEdge, edge_time_ns, payload);
-  }
+  // Edges and timeouts: what the loop does next depends on which it was (a
+  // timeout makes it poll the IMU). OtherInput needs no record: the serial
+  // bytes it announced are recorded when read.
+  const std::array<std::uint8_t, 1> payload{line_};
+  if (s == EdgeStatus::Edge) writer_.append(Kind::GpioEdge, edge_time_ns, payload);
+  // An error is a timeout to the loop (it polls), so it replays as one.
+  if (s == EdgeStatus::Timeout || s == EdgeStatus::Error) writer_.append(Kind::EdgeTimeout, edge_time_ns, payload);
   return s;
 }
 

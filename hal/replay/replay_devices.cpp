@@ -106,9 +106,14 @@ EdgeStatus ReplaySession::Drdy::wait_rising(TimeNs timeout_ns, TimeNs& edge_time
       s_.consume(*e);
       return EdgeStatus::Edge;
     }
+    if (e->kind == Kind::EdgeTimeout) {  // the wait gave up here: the loop polled next
+      edge_time_ns = e->t_ns;
+      s_.consume(*e);
+      return EdgeStatus::Timeout;
+    }
     if (e->kind == Kind::SerialRx) {  // bytes arrived first: let the loop read them
       s_.clock_.advance_to_ns(std::min(e->t_ns, s_.clock_.now_ns() + timeout_ns));
-      return EdgeStatus::Timeout;
+      return EdgeStatus::OtherInput;
     }
     // An I2C transfer or a write nobody asked for at this point: the loop
     // took another path than during recording. Skip it so replay goes on.

@@ -2,8 +2,9 @@
 // Replay back ends: the HAL interfaces fed from a raw recording. The devices
 // share one cursor over the records and answer in the order the board's loop
 // asked during recording, so the same drivers see the same bytes:
-//   - wait_rising() returns the edge at the cursor (and sets the clock to
-//     its time); any other record there is "no edge yet" (Timeout);
+//   - wait_rising() returns the edge or the timeout at the cursor (and sets
+//     the clock to its time); serial bytes there are OtherInput; any other
+//     record is one the loop did not ask for (a desync: counted, skipped);
 //   - read() on the serial port returns the chunk at the cursor, or nothing;
 //   - an I2C transfer must match the record at the cursor (address, register,
 //     length) and gets its recorded status and bytes; a mismatch is a

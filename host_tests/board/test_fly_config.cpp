@@ -8,8 +8,7 @@
 
 #include "drivers/imu/icm20948.hpp"
 #include "firmware/board/config/fly_config.hpp"
-#include "firmware/cli/board_devices.hpp"
-#include "firmware/cli/board_options.hpp"
+#include "firmware/board/config/fly_setup.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
 namespace {
@@ -65,24 +64,20 @@ TEST(FlyConfig, ShippedFileShowsEveryKey) {
   }
 }
 
-TEST(FlyConfig, DefaultsAreTheCommandLines) {
+// The command line writes into the same FlyConfig (cli/board_options), so
+// its defaults are these; and these are the driver's own defaults.
+TEST(FlyConfig, DefaultsAreTheDrivers) {
   const FlyConfig c;
-  const sinu::cli::ImuOptions imu;
-  const sinu::cli::DeviceOptions dev;
-  EXPECT_EQ(c.imu.i2c, dev.i2c);
-  EXPECT_EQ(c.imu.address, sinu::drivers::Icm20948Config{}.address);  // fly has no address option: the driver's
-  EXPECT_EQ(c.imu.drdy_chip, dev.gpio_chip);
-  EXPECT_EQ(c.imu.drdy_line, dev.drdy_line);
-  EXPECT_EQ(c.imu.rate_hz, imu.odr_hz);
-  EXPECT_EQ(c.imu.accel_range_g, imu.accel_g);
-  EXPECT_EQ(c.imu.gyro_range_dps, imu.gyro_dps);
-  EXPECT_EQ(c.imu.dlpf, imu.dlpf);
-  EXPECT_EQ(c.imu.mounting, imu.mounting);
-  EXPECT_EQ(c.gps.device, dev.serial);
-  EXPECT_EQ(c.gps.baud, dev.baud);
-  EXPECT_EQ(c.gps.setup, dev.gps_setup);
-  EXPECT_EQ(c.gps.rate_hz, dev.gps_rate_hz);
-  EXPECT_EQ(c.gps.setup_baud, dev.gps_baud);
+  sinu::drivers::Icm20948Config from_file;
+  std::string error;
+  ASSERT_TRUE(sinu::board::imu_config(c.imu, from_file, error)) << error;
+  const sinu::drivers::Icm20948Config driver;
+  EXPECT_EQ(from_file.address, driver.address);
+  EXPECT_EQ(from_file.accel_range, driver.accel_range);
+  EXPECT_EQ(from_file.gyro_range, driver.gyro_range);
+  EXPECT_EQ(from_file.dlpf, driver.dlpf);
+  EXPECT_EQ(from_file.odr_hz, driver.odr_hz);
+  EXPECT_EQ(from_file.mounting.to_body({1.0, 2.0, 3.0}), driver.mounting.to_body({1.0, 2.0, 3.0}));
 }
 
 TEST(FlyConfig, EmptyFileIsTheDefaults) {

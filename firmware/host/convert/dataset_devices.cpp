@@ -68,11 +68,18 @@ hal::TimeNs DatasetDevices::first_time_ns() {
 hal::EdgeStatus DatasetDevices::wait_rising(hal::TimeNs timeout_ns, hal::TimeNs& edge_time_ns) {
   if (imu_done_) return hal::EdgeStatus::Closed;
   if (!have_row_ && !read_row()) return hal::EdgeStatus::Closed;
-  // GPS bytes due before this edge are read first (the loop drains the
-  // serial port after each turn), as they would have been on the board.
+  // GPS bytes due before this edge wake the loop first (it reads them at
+  // their time, as the board does); nothing due within the timeout (a gap in
+  // imu.csv) is a timeout, as on the board.
   const hal::TimeNs t = seconds_to_ns(row_.t_s());
-  if (!gps_done_ && line_ns_ < t) {
-    clock_.advance_to_ns(std::min(line_ns_, clock_.now_ns() + timeout_ns));
+  const hal::TimeNs give_up = clock_.now_ns() + timeout_ns;
+  if (!gps_done_ && line_ns_ < t && line_ns_ <= give_up) {
+    clock_.advance_to_ns(line_ns_);
+    return hal::EdgeStatus::OtherInput;
+  }
+  if (t > give_up) {
+    clock_.advance_to_ns(give_up);
+    edge_time_ns = give_up;
     return hal::EdgeStatus::Timeout;
   }
   have_row_ = false;

@@ -1,0 +1,209 @@
+// sinu fly [--config /etc/sinu/sinu.toml] [options that override it]
+//   [--emulate DATASET [--speed X] [--fault KIND:START:DURATION,...]]
+// The navigation unit on the companion computer: probe the sensors,
+// configure the receiver, align (in motion too), navigate on every
+// data-ready edge, send the solution to the outputs the configuration turns
+// on; a health line a second on stderr. With --emulate the same loop runs on
+// the host against a dataset (host/emulate): hardware in the loop.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "firmware/board/config/fly_setup.hpp"
+#include "firmware/board/fly_loop.hpp"
+#include "firmware/board/linux_board.hpp"
+#include "firmware/board/output_devices.hpp"
+#include "firmware/cli/board_options.hpp"
+#include "firmware/cli/command.hpp"
+#include "firmware/cli/exit_codes.hpp"
+#include "firmware/cli/stop_signal.hpp"
+#if SINU_HOST_MODES
+#include "firmware/host/emulate/emulated_board.hpp"
+#endif
+
+namespace sinu::cli {
+
+namespace {
+
+constexpr const char* kDefaultConfig = "/etc/sinu/sinu.toml";
+
+struct FlyOptions {
+  BoardOptions board;
+  std::string config;
+  double duration_s = 0.0;
+  bool stats = false;
+  double health_period_s = 1.0;
+  double log_rate_hz = 10.0;
+  std::string record;
+  std::string emulate, faults;
+  double speed = 1.0;
+};
+
+/// The configuration: the file (the default one if it exists), then what the command line gives.
+bool load_config(const FlyOptions& o, board::FlyConfig& cfg, std::string& error) {
+  cfg = {};
+  std::error_code ec;
+  const std::string path = !o.config.empty() ? o.config : std::filesystem::exists(kDefaultConfig, ec) ? kDefaultConfig : "";
+  if (!path.empty() && !board::load_fly_config(path, cfg, error)) return false;
+  if (path.empty()) std::fprintf(stderr, "sinu fly: no %s: the built-in defaults (sinu.toml's)\n", kDefaultConfig);
+  o.board.apply_given(cfg);
+  if (!o.record.empty()) {
+    cfg.recording.enabled = true;
+    cfg.recording.path = o.record;
+  }
+  return true;
+}
+
+void print_end(const board::FlyLoop& loop, const board::OutputDevices& outputs, bool stats) {
+  const auto& imu = loop.board().imu().counters();
+  const auto& b = loop.board().counters();
+  const est::NavCounters& n = loop.unit().navigator().counters();
+  std::fprintf(stderr,
+               "sinu fly: end: %llu IMU samples (%llu polled, %llu I2C errors, %llu re-inits; %llu data-ready "
+               "timeouts); GPS %llu sentences corrupt, %llu garbage bytes; %llu solutions, %s\n",
+               static_cast<unsigned long long>(imu.samples), static_cast<unsigned long long>(imu.polled),
+               static_cast<unsigned long long>(imu.i2c_errors), static_cast<unsigned long long>(imu.reinits),
+               static_cast<unsigned long long>(b.edge_timeouts),
+               static_cast<unsigned long long>(loop.board().gps_counters().sentences.corrupt()),
+               static_cast<unsigned long long>(loop.board().gps_counters().framing.noise_bytes),
+               static_cast<unsigned long long>(loop.solutions()),
+               !loop.unit().navigator().aligned() ? "NOT ALIGNED"
+               : n.lost_total_s > 0.0            ? "solution was LOST at times"
+               : n.resets() > 0                  ? "solution reset to GNSS at times"
+                                                 : "solution ok");
+  std::fprintf(stderr, "sinu fly: outputs: %s\n", outputs.summary().c_str());
+  if (stats) {
+    const board::LoopStats& s = loop.stats();
+    std::printf("loop time per sample (data-ready edge to outputs written): median %.1f us, worst %.1f us, %llu samples\n",
+                static_cast<double>(s.median_ns()) * 1e-3, static_cast<double>(s.worst_ns()) * 1e-3,
+                static_cast<unsigned long long>(s.count()));
+  }
+}
+
+int run_fly(const FlyOptions& o) {
+  std::string error;
+  board::FlyConfig cfg;
+  drivers::Icm20948Config imu;
+  board::NavUnitConfig unit;
+  if (!load_config(o, cfg, error) || !board::imu_config(cfg.imu, imu, error) ||
+      !board::nav_unit_config(cfg, unit, error)) {
+    std::fprintf(stderr, "sinu fly: %s\n", error.c_str());
+    return kExitUsage;
+  }
+  std::error_code ec;
+  if (!unit.calib_path.empty() && !std::filesystem::exists(unit.calib_path, ec)) {
+    std::fprintf(stderr, "sinu fly: no calibration at %s: the built-in sensor model (run `sinu bench` on the board)\n",
+                 unit.calib_path.c_str());
+    unit.calib_path.clear();
+  }
+  const std::string record = cfg.recording.enabled ? cfg.recording.path : "";
+  board::OutputDevices outputs;
+  if (!outputs.open(cfg.outputs, error)) {
+    std::fprintf(stderr, "sinu fly: %s\n", error.c_str());
+    return kExitFailure;
+  }
+  board::FlyOutputs fly_outputs = outputs.outputs();
+  fly_outputs.log_period_s = o.log_rate_hz > 0.0 ? 1.0 / o.log_rate_hz : 0.0;
+  board::FlyLoopConfig loop_cfg;
+  loop_cfg.health_period_s = o.health_period_s;
+  board::LinuxBoard linux_board;
+#if SINU_HOST_MODES
+  emulate::EmulatedBoard emulated;
+#endif
+  std::unique_ptr<board::FlyLoop> loop;
+  if (!o.emulate.empty()) {
+#if SINU_HOST_MODES
+    emulate::EmulateOptions eo;
+    eo.dataset = o.emulate;
+    eo.speed = o.speed;
+    if (!emulate::parse_faults(o.faults, eo.faults, error)) {
+      std::fprintf(stderr, "sinu fly: %s\n", error.c_str());
+      return kExitUsage;
+    }
+    if (!emulated.open(eo, imu, record, error)) {
+      std::fprintf(stderr, "sinu fly: %s\n", error.c_str());
+      return kExitFailure;
+    }
+    loop_cfg.edge_wall_ns = emulated.edge_wall_ns();
+    loop_cfg.recording = emulated.writer();
+    loop = std::make_unique<board::FlyLoop>(emulated.devices(), imu, fly_outputs, emulated.wall_clock(), loop_cfg);
+#else
+    std::fprintf(stderr, "sinu fly: --emulate is a host mode, not in this board-only build\n");
+    return kExitUsage;
+#endif
+  } else {
+    if (!linux_board.open(cfg.imu, cfg.gps, record, error)) {
+      std::fprintf(stderr, "sinu fly: %s\n", error.c_str());
+      return kExitFailure;
+    }
+    loop_cfg.recording = linux_board.writer();
+    loop = std::make_unique<board::FlyLoop>(linux_board.devices(), imu, fly_outputs, linux_board.clock(), loop_cfg);
+  }
+  if (!loop->init(unit, error)) {
+    std::fprintf(stderr, "sinu fly: %s\n", error.c_str());
+    return kExitFailure;
+  }
+  install_stop_signals();
+  loop->run(&stop_requested(), static_cast<hal::TimeNs>(o.duration_s * 1e9));
+  int rc = kExitOk;
+  if (!loop->close_log(error)) {
+    std::fprintf(stderr, "sinu fly: %s\n", error.c_str());
+    rc = kExitFailure;
+  }
+  if (loop_cfg.recording && !loop_cfg.recording->close()) {
+    std::fprintf(stderr, "sinu fly: %s\n", loop_cfg.recording->error().c_str());
+    rc = kExitFailure;
+  }
+#if SINU_HOST_MODES
+  if (!o.emulate.empty() && !emulated.error().empty()) {
+    std::fprintf(stderr, "sinu fly: %s\n", emulated.error().c_str());
+    rc = kExitFailure;
+  }
+#endif
+  print_end(*loop, outputs, o.stats);
+  return rc;
+}
+
+}  // namespace
+
+void add_fly_command(CLI::App& app, Action& action) {
+  auto o = std::make_shared<FlyOptions>();
+  CLI::App* cmd = app.add_subcommand("fly", "Run the navigation unit on the companion computer");
+  cmd->add_option("--config", o->config,
+                  "sinu.toml (default: /etc/sinu/sinu.toml if it exists); the options below override it");
+  o->board.add_devices(*cmd);
+  o->board.add_imu(*cmd);
+  using board::FlyConfig;
+  o->board.add(*cmd, "--calib", [](FlyConfig& c) -> auto& { return c.navigation.calibration; },
+               "calib.json from sinu bench / sinu calibrate (navigation.calibration)");
+  o->board.add(*cmd, "--model", [](FlyConfig& c) -> auto& { return c.navigation.model; }, "Sensor-error model: gm or ar")
+      ->check(CLI::IsMember({"gm", "ar"}));
+  o->board.add(*cmd, "--vehicle", [](FlyConfig& c) -> auto& { return c.navigation.vehicle; }, "air or ground")
+      ->check(CLI::IsMember({"air", "ground"}));
+  o->board.add(*cmd, "--log", [](FlyConfig& c) -> auto& { return c.outputs.log.path; },
+               "Navigation log (nav.csv columns) (outputs.log.path)");
+  cmd->add_option("--record", o->record, "Also record the raw HAL traffic to this file (recording.path)");
+  cmd->add_option("--duration", o->duration_s, "Stop after this many seconds of board time (0: until stopped)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--log-rate", o->log_rate_hz, "Navigation log rows per second (0: every solution)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--stats", o->stats, "At the end, the loop's time per sample: median and worst case");
+  cmd->add_option("--health-period", o->health_period_s, "Seconds between health lines (0: none)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+#if SINU_HOST_MODES
+  cmd->add_option("--emulate", o->emulate,
+                  "Host rehearsal: the sensors played by this dataset (ICM-20948 emulator, fake data-ready line, GPS "
+                  "bytes through a pty)");
+  cmd->add_option("--speed", o->speed, "With --emulate: times real time (1: real time, 0: as fast as possible)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--fault", o->faults,
+                  "With --emulate: faults KIND:START:DURATION[,...] in the dataset's t [s]; KIND i2c-stop, "
+                  "gps-garbage, drdy-lost");
+#endif
+  cmd->callback([&action, o] { action = [o] { return run_fly(*o); }; });
+}
+
+}  // namespace sinu::cli
