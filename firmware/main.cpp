@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   sinu::cli::add_record_command(app, action);
   sinu::cli::add_convert_command(app, action);
   sinu::cli::add_fly_command(app, action);
+  sinu::cli::add_bench_command(app, action);
   sinu::cli::add_diagnose_command(app, action);
   try {
     app.parse(argc, argv);

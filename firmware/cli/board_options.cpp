@@ -1,5 +1,8 @@
 #include "firmware/cli/board_options.hpp"
 
+#include <cstdio>
+#include <filesystem>
+
 #include "firmware/board/config/fly_setup.hpp"
 
 namespace sinu::cli {
@@ -37,6 +40,17 @@ void BoardOptions::apply_given(FlyConfig& config) const {
   for (const Override& o : overrides_) {
     if (o.option->count() > 0) o.apply(config);
   }
+}
+
+bool BoardOptions::load(const std::string& path, FlyConfig& cfg, std::string& error) const {
+  constexpr const char* kDefault = "/etc/sinu/sinu.toml";
+  cfg = {};
+  std::error_code ec;
+  const std::string file = !path.empty() ? path : std::filesystem::exists(kDefault, ec) ? kDefault : "";
+  if (!file.empty() && !board::load_fly_config(file, cfg, error)) return false;
+  if (file.empty()) std::fprintf(stderr, "sinu: no %s: the built-in defaults (those of the shipped sinu.toml)\n", kDefault);
+  apply_given(cfg);
+  return true;
 }
 
 bool BoardOptions::given(const std::string& name) const {

@@ -24,6 +24,9 @@ class BoardOptions {
   void add_devices(CLI::App& cmd);
   /// Copies the options that were given into `config` (over a loaded file).
   void apply_given(board::FlyConfig& config) const;
+  /// The configuration: `path` (or /etc/sinu/sinu.toml if it exists, else the
+  /// defaults, said on stderr), then the options given. False with `error`.
+  bool load(const std::string& path, board::FlyConfig& config, std::string& error) const;
   /// The driver configuration of `values.imu`; false with `error` otherwise.
   bool imu_config(drivers::Icm20948Config& out, std::string& error) const;
   /// Whether `name` (e.g. "--accel-range") was given.

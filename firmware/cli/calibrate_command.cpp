@@ -10,6 +10,7 @@
 #include "firmware/host/calibration/calibration_run.hpp"
 #include "firmware/host/calibration/progress_bar.hpp"
 #include "firmware/host/calibration/report.hpp"
+#include "firmware/cli/calibrate_command.hpp"
 #include "firmware/cli/command.hpp"
 #include "firmware/cli/exit_codes.hpp"
 
@@ -21,12 +22,6 @@ namespace {
 constexpr double kLongSession_s = 600.0;
 constexpr std::size_t kRowsPer8h = 1152000;  // 40 Hz; only for the reading bar's scale
 
-struct CalibrateOptions {
-  std::vector<std::string> inputs;
-  std::string out, report_dir, wavelet = "db4", model = "burg:3";
-  int levels = 3;
-  bool no_denoise = false, quiet = false;
-};
 
 bool parse_model(const std::string& text, calibration::ModelChoice& m) {
   const auto colon = text.find(':');
@@ -46,6 +41,8 @@ bool parse_model(const std::string& text, calibration::ModelChoice& m) {
   }
   return true;
 }
+
+}  // namespace
 
 int run_calibrate(const CalibrateOptions& o) {
   calibration::ModelChoice model;
@@ -105,8 +102,6 @@ int run_calibrate(const CalibrateOptions& o) {
               run.sessions.size() == 1 ? "" : "s", run.denoiser.name.c_str(), o.model.c_str());
   return kExitOk;
 }
-
-}  // namespace
 
 void add_calibrate_command(CLI::App& app, Action& action) {
   auto o = std::make_shared<CalibrateOptions>();

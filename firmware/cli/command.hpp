@@ -18,6 +18,7 @@ void add_replay_command(CLI::App& app, Action& action);
 void add_record_command(CLI::App& app, Action& action);
 void add_convert_command(CLI::App& app, Action& action);
 void add_fly_command(CLI::App& app, Action& action);
+void add_bench_command(CLI::App& app, Action& action);
 void add_diagnose_command(CLI::App& app, Action& action);
 
 }  // namespace sinu::cli

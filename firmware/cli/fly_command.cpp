@@ -7,25 +7,21 @@
 // the host against a dataset (host/emulate): hardware in the loop.
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "firmware/board/config/fly_setup.hpp"
 #include "firmware/board/fly_loop.hpp"
-#include "firmware/board/linux_board.hpp"
 #include "firmware/board/output_devices.hpp"
 #include "firmware/cli/board_options.hpp"
+#include "firmware/cli/board_session.hpp"
 #include "firmware/cli/command.hpp"
 #include "firmware/cli/exit_codes.hpp"
 #include "firmware/cli/stop_signal.hpp"
-#if SINU_HOST_MODES
-#include "firmware/host/emulate/emulated_board.hpp"
-#endif
 
 namespace sinu::cli {
 
 namespace {
-
-constexpr const char* kDefaultConfig = "/etc/sinu/sinu.toml";
 
 struct FlyOptions {
   BoardOptions board;
@@ -35,24 +31,8 @@ struct FlyOptions {
   double health_period_s = 1.0;
   double log_rate_hz = 10.0;
   std::string record;
-  std::string emulate, faults;
-  double speed = 1.0;
+  EmulateRequest emulate;
 };
-
-/// The configuration: the file (the default one if it exists), then what the command line gives.
-bool load_config(const FlyOptions& o, board::FlyConfig& cfg, std::string& error) {
-  cfg = {};
-  std::error_code ec;
-  const std::string path = !o.config.empty() ? o.config : std::filesystem::exists(kDefaultConfig, ec) ? kDefaultConfig : "";
-  if (!path.empty() && !board::load_fly_config(path, cfg, error)) return false;
-  if (path.empty()) std::fprintf(stderr, "sinu fly: no %s: the built-in defaults (sinu.toml's)\n", kDefaultConfig);
-  o.board.apply_given(cfg);
-  if (!o.record.empty()) {
-    cfg.recording.enabled = true;
-    cfg.recording.path = o.record;
-  }
-  return true;
-}
 
 void print_end(const board::FlyLoop& loop, const board::OutputDevices& outputs, bool stats) {
   const auto& imu = loop.board().imu().counters();
@@ -85,7 +65,7 @@ int run_fly(const FlyOptions& o) {
   board::FlyConfig cfg;
   drivers::Icm20948Config imu;
   board::NavUnitConfig unit;
-  if (!load_config(o, cfg, error) || !board::imu_config(cfg.imu, imu, error) ||
+  if (!o.board.load(o.config, cfg, error) || !board::imu_config(cfg.imu, imu, error) ||
       !board::nav_unit_config(cfg, unit, error)) {
     std::fprintf(stderr, "sinu fly: %s\n", error.c_str());
     return kExitUsage;
@@ -96,6 +76,10 @@ int run_fly(const FlyOptions& o) {
                  unit.calib_path.c_str());
     unit.calib_path.clear();
   }
+  if (!o.record.empty()) {
+    cfg.recording.enabled = true;
+    cfg.recording.path = o.record;
+  }
   const std::string record = cfg.recording.enabled ? cfg.recording.path : "";
   board::OutputDevices outputs;
   if (!outputs.open(cfg.outputs, error)) {
@@ -104,41 +88,17 @@ int run_fly(const FlyOptions& o) {
   }
   board::FlyOutputs fly_outputs = outputs.outputs();
   fly_outputs.log_period_s = o.log_rate_hz > 0.0 ? 1.0 / o.log_rate_hz : 0.0;
+  BoardSession session;
+  bool usage = false;
+  if (!session.open(cfg, imu, record, o.emulate, error, usage)) {
+    std::fprintf(stderr, "sinu fly: %s\n", error.c_str());
+    return usage ? kExitUsage : kExitFailure;
+  }
   board::FlyLoopConfig loop_cfg;
   loop_cfg.health_period_s = o.health_period_s;
-  board::LinuxBoard linux_board;
-#if SINU_HOST_MODES
-  emulate::EmulatedBoard emulated;
-#endif
-  std::unique_ptr<board::FlyLoop> loop;
-  if (!o.emulate.empty()) {
-#if SINU_HOST_MODES
-    emulate::EmulateOptions eo;
-    eo.dataset = o.emulate;
-    eo.speed = o.speed;
-    if (!emulate::parse_faults(o.faults, eo.faults, error)) {
-      std::fprintf(stderr, "sinu fly: %s\n", error.c_str());
-      return kExitUsage;
-    }
-    if (!emulated.open(eo, imu, record, error)) {
-      std::fprintf(stderr, "sinu fly: %s\n", error.c_str());
-      return kExitFailure;
-    }
-    loop_cfg.edge_wall_ns = emulated.edge_wall_ns();
-    loop_cfg.recording = emulated.writer();
-    loop = std::make_unique<board::FlyLoop>(emulated.devices(), imu, fly_outputs, emulated.wall_clock(), loop_cfg);
-#else
-    std::fprintf(stderr, "sinu fly: --emulate is a host mode, not in this board-only build\n");
-    return kExitUsage;
-#endif
-  } else {
-    if (!linux_board.open(cfg.imu, cfg.gps, record, error)) {
-      std::fprintf(stderr, "sinu fly: %s\n", error.c_str());
-      return kExitFailure;
-    }
-    loop_cfg.recording = linux_board.writer();
-    loop = std::make_unique<board::FlyLoop>(linux_board.devices(), imu, fly_outputs, linux_board.clock(), loop_cfg);
-  }
+  loop_cfg.edge_wall_ns = session.edge_wall_ns();
+  loop_cfg.recording = session.writer();
+  auto loop = std::make_unique<board::FlyLoop>(session.devices(), imu, fly_outputs, session.wall_clock(), loop_cfg);
   if (!loop->init(unit, error)) {
     std::fprintf(stderr, "sinu fly: %s\n", error.c_str());
     return kExitFailure;
@@ -154,12 +114,10 @@ int run_fly(const FlyOptions& o) {
     std::fprintf(stderr, "sinu fly: %s\n", loop_cfg.recording->error().c_str());
     rc = kExitFailure;
   }
-#if SINU_HOST_MODES
-  if (!o.emulate.empty() && !emulated.error().empty()) {
-    std::fprintf(stderr, "sinu fly: %s\n", emulated.error().c_str());
+  if (!session.error().empty()) {
+    std::fprintf(stderr, "sinu fly: %s\n", session.error().c_str());
     rc = kExitFailure;
   }
-#endif
   print_end(*loop, outputs, o.stats);
   return rc;
 }
@@ -193,13 +151,13 @@ void add_fly_command(CLI::App& app, Action& action) {
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
 #if SINU_HOST_MODES
-  cmd->add_option("--emulate", o->emulate,
+  cmd->add_option("--emulate", o->emulate.dataset,
                   "Host rehearsal: the sensors played by this dataset (ICM-20948 emulator, fake data-ready line, GPS "
                   "bytes through a pty)");
-  cmd->add_option("--speed", o->speed, "With --emulate: times real time (1: real time, 0: as fast as possible)")
+  cmd->add_option("--speed", o->emulate.speed, "With --emulate: times real time (1: real time, 0: as fast as possible)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--fault", o->faults,
+  cmd->add_option("--fault", o->emulate.faults,
                   "With --emulate: faults KIND:START:DURATION[,...] in the dataset's t [s]; KIND i2c-stop, "
                   "gps-garbage, drdy-lost");
 #endif
