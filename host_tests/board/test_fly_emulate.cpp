@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <regex>
@@ -135,6 +136,33 @@ TEST(FlyEmulate, FaultsMidFlightAreSurvivedFlaggedAndTheSolutionReconverges) {
   // The recording holds the faults as the loop met them: it replays to the same solution.
   ASSERT_EQ(run_sinu({"replay", "--in", raw, "--out", tmp.file("from_raw"), "--quiet"}).exit_code, 0);
   EXPECT_EQ(read_file(tmp.file("fly_nav.csv")), read_file(tmp.file("from_raw") + "/nav.csv"));
+}
+
+// systemctl stop (SIGTERM) and Ctrl-C (SIGINT) mid-flight: the loop ends its
+// turn, the navigation log and the recording are flushed whole, exit 0.
+TEST(FlyEmulate, SigtermAndSigintFlushTheLogAndTheRecordingAndExitZero) {
+  TempDir tmp;
+  const FlyFlight fl = make_fly_flight(tmp, "flight", 300, 14);
+  for (const int sig : {SIGTERM, SIGINT}) {
+    const std::string name = sig == SIGTERM ? "term" : "int";
+    const std::string config = write_fly_config(tmp, name), raw = tmp.file(name + ".raw");
+    const ProcessResult r = run_sinu({"fly", "--config", config, "--emulate", fl.quantised, "--speed", "1",
+                                      "--record", raw, "--health-period", "0"},
+                                     8.0, sig);  // 8 s in: a few seconds after alignment on this flight
+    ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    const std::string log = read_file(tmp.file(name + "_nav.csv"));
+    ASSERT_FALSE(log.empty());
+    EXPECT_EQ(log.back(), '\n') << "the last row whole";
+    const CsvNumbers rows = read_csv_numbers(tmp.file(name + "_nav.csv"));
+    ASSERT_GT(rows.rows.size(), 5u) << name << ": navigated before the signal";
+    EXPECT_LT(rows.rows.back()[0], fl.t0_s + 12.0) << "stopped when asked";
+    const ProcessResult inspect = run_sinu({"inspect", "recording", raw});
+    EXPECT_EQ(inspect.exit_code, 0) << inspect.err;
+    EXPECT_EQ(inspect.out.find("truncated"), std::string::npos) << "closed, not cut: " << inspect.out;
+    // And the recording replays to the log it ended with.
+    ASSERT_EQ(run_sinu({"replay", "--in", raw, "--out", tmp.file(name + "_replay"), "--quiet"}).exit_code, 0);
+    EXPECT_EQ(log, read_file(tmp.file(name + "_replay") + "/nav.csv"));
+  }
 }
 
 }  // namespace

@@ -5,7 +5,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
+#include <csignal>
 #include <fstream>
+#include <thread>
 
 #include "host_tests/support/temp_dir.hpp"
 
@@ -13,7 +16,7 @@ extern char** environ;
 
 namespace sinu::test {
 
-ProcessResult run_process(const std::vector<std::string>& argv) {
+ProcessResult run_process(const std::vector<std::string>& argv, double signal_after_s, int signal) {
   TempDir tmp;
   const std::string out_path = tmp.file("stdout"), err_path = tmp.file("stderr");
   posix_spawn_file_actions_t actions;
@@ -27,6 +30,10 @@ ProcessResult run_process(const std::vector<std::string>& argv) {
   pid_t pid = 0;
   ProcessResult r;
   if (posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ) == 0) {
+    if (signal_after_s > 0.0) {
+      std::this_thread::sleep_for(std::chrono::duration<double>(signal_after_s));
+      ::kill(pid, signal);
+    }
     int status = 0;
     waitpid(pid, &status, 0);
     if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
@@ -37,10 +44,10 @@ ProcessResult run_process(const std::vector<std::string>& argv) {
   return r;
 }
 
-ProcessResult run_sinu(const std::vector<std::string>& args) {
+ProcessResult run_sinu(const std::vector<std::string>& args, double signal_after_s, int signal) {
   std::vector<std::string> argv{SINU_EXE};
   argv.insert(argv.end(), args.begin(), args.end());
-  return run_process(argv);
+  return run_process(argv, signal_after_s, signal);
 }
 
 }  // namespace sinu::test

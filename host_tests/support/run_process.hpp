@@ -11,8 +11,9 @@ struct ProcessResult {
   std::string out, err;
 };
 
-ProcessResult run_process(const std::vector<std::string>& argv);
-/// run_process({SINU_EXE, args...}).
-ProcessResult run_sinu(const std::vector<std::string>& args);
+/// `signal_after_s` > 0: sends `signal` to the process that long after its start.
+ProcessResult run_process(const std::vector<std::string>& argv, double signal_after_s = 0.0, int signal = 15);
+/// run_process({SINU_EXE, args...}, ...).
+ProcessResult run_sinu(const std::vector<std::string>& args, double signal_after_s = 0.0, int signal = 15);
 
 }  // namespace sinu::test
