@@ -24,7 +24,7 @@ void append(char* buf, std::size_t size, std::size_t& used, const char* fmt, ...
 
 FlyLoop::FlyLoop(const BoardDevices& devices, const drivers::Icm20948Config& imu, const FlyOutputs& outputs,
                  hal::Clock& wall, const FlyLoopConfig& config)
-    : loop_(devices, imu), outputs_(outputs), wall_(wall), config_(config), board_clock_(devices.clock) {}
+    : loop_(devices, imu), outputs_(outputs), wall_(wall), config_(config) {}
 
 bool FlyLoop::init(const NavUnitConfig& unit, std::string& error) {
   if (!unit_.init(unit, this, error)) return false;

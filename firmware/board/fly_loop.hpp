@@ -89,7 +89,6 @@ class FlyLoop final : private BoardSink, private est::NavObserver {
   bool logging_ = false;
   hal::Clock& wall_;
   FlyLoopConfig config_;
-  hal::Clock& board_clock_;
   LoopStats stats_;
   NavSolution solution_;
   std::uint64_t solutions_ = 0;

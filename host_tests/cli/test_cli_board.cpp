@@ -116,3 +116,27 @@ TEST(CliRecord, FailsCleanlyWithoutTheBoardsDevices) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("/nonexistent/i2c-9"), std::string::npos) << r.err;
 }
+
+TEST(CliFly, FailsCleanlyWithoutTheBoardsDevices) {
+  sinu::test::TempDir dir;
+  const std::string cfg = dir.write("sinu.toml", "[imu]\ni2c = \"/nonexistent/i2c-9\"\n[outputs.log]\nenabled = false\n");
+  const auto r = run_sinu({"fly", "--config", cfg, "--duration", "1"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("/nonexistent/i2c-9"), std::string::npos) << r.err;
+  // The command line overrides the file: the bus named is the option's.
+  const auto o = run_sinu({"fly", "--config", cfg, "--i2c", "/nonexistent/i2c-7", "--duration", "1"});
+  EXPECT_EQ(o.exit_code, 1);
+  EXPECT_NE(o.err.find("/nonexistent/i2c-7"), std::string::npos) << o.err;
+  EXPECT_EQ(o.err.find("/nonexistent/i2c-9"), std::string::npos) << o.err;
+}
+
+TEST(CliFly, ABadConfigurationNamesFileLineAndKeyAndExitsTwo) {
+  sinu::test::TempDir dir;
+  const std::string cfg = dir.write("sinu.toml", "[imu]\nrate_hz = 40\nadress = 0x68\n");
+  const auto r = run_sinu({"fly", "--config", cfg, "--emulate", "/nonexistent"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(cfg + ":3: imu.adress: unknown key"), std::string::npos) << r.err;
+  const auto f = run_sinu({"fly", "--emulate", dir.path().string(), "--fault", "i2c-stop:10"});
+  EXPECT_EQ(f.exit_code, 2);
+  EXPECT_NE(f.err.find("--fault"), std::string::npos) << f.err;
+}
