@@ -13,16 +13,19 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "sinu 0.1.0");
   sinu::cli::Action action;
+  // On the board (SINU_BOARD_ONLY builds only these):
+  sinu::cli::add_fly_command(app, action);
+  sinu::cli::add_record_command(app, action);
+  sinu::cli::add_bench_command(app, action);
+  sinu::cli::add_calibrate_command(app, action);
+#if SINU_HOST_MODES
   sinu::cli::add_inspect_command(app, action);
   sinu::cli::add_simulate_command(app, action);
   sinu::cli::add_denoise_command(app, action);
-  sinu::cli::add_calibrate_command(app, action);
   sinu::cli::add_replay_command(app, action);
-  sinu::cli::add_record_command(app, action);
   sinu::cli::add_convert_command(app, action);
-  sinu::cli::add_fly_command(app, action);
-  sinu::cli::add_bench_command(app, action);
   sinu::cli::add_diagnose_command(app, action);
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -2,7 +2,8 @@
 # Installs everything sinu needs on a fresh Debian bookworm machine, from
 # Debian's packages only. Idempotent and non-interactive; run as root (or
 # with sudo available). Usage: tools/setup.sh [--cross] [--reference]
-#   --cross      also the aarch64/armhf cross compilers and qemu-user
+#   --cross      also the aarch64/armhf cross compilers, qemu-user, the target
+#                libraries (Debian multiarch) and the .deb tools (tools/cross_check.sh)
 #   --reference  also the tools that regenerate test fixtures (pywt, Octave)
 set -euo pipefail
 
@@ -22,9 +23,14 @@ for arg in "$@"; do
   case "$arg" in
     --cross)
       cross=1
-      packages+=(g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user
-                 libgpiod-dev:arm64 libfmt-dev:arm64 libgpiod-dev:armhf libfmt-dev:armhf
-                 libtomlplusplus-dev:arm64 libtomlplusplus-dev:armhf) ;;
+      # Eigen, nlohmann-json and CLI11 are architecture-independent headers (above);
+      # the libraries the program and its tests link come per target architecture.
+      # systemd-analyze checks the unit, dpkg-dev + file let cpack run dpkg-shlibdeps.
+      packages+=(g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user systemd dpkg-dev file)
+      for arch in arm64 armhf; do
+        packages+=(libgpiod-dev:$arch libfmt-dev:$arch libtomlplusplus-dev:$arch
+                   libgtest-dev:$arch libgmock-dev:$arch)
+      done ;;
     --reference) packages+=(python3-pywt python3-scipy octave octave-signal) ;;
     *) echo "setup.sh: unknown option $arg" >&2; exit 2 ;;
   esac

@@ -168,11 +168,9 @@ void add_bench_command(CLI::App& app, Action& action) {
   o->board.add_imu(*cmd);
   o->board.add(*cmd, "--calib", [](board::FlyConfig& c) -> auto& { return c.navigation.calibration; },
                "Where to put calib.json for sinu fly (navigation.calibration)");
-#if SINU_HOST_MODES
-  cmd->add_option("--emulate", o->emulate.dataset, "Host rehearsal: the sensors played by this static dataset");
+  cmd->add_option("--emulate", o->emulate.dataset, "Rehearsal: the sensors played by this static dataset");
   cmd->add_option("--speed", o->emulate.speed, "With --emulate: times real time (0: as fast as possible)")
       ->capture_default_str();
-#endif
   cmd->callback([&action, o] { action = [o] { return run_bench(*o); }; });
 }
 

@@ -8,9 +8,7 @@
 #include "firmware/board/board_loop.hpp"
 #include "firmware/board/config/fly_config.hpp"
 #include "firmware/board/linux_board.hpp"
-#if SINU_HOST_MODES
 #include "firmware/host/emulate/emulated_board.hpp"
-#endif
 
 namespace sinu::cli {
 
@@ -36,9 +34,7 @@ class BoardSession {
 
  private:
   board::LinuxBoard linux_;
-#if SINU_HOST_MODES
   emulate::EmulatedBoard emulated_;
-#endif
   bool emulating_ = false;
 };
 

@@ -150,9 +150,8 @@ void add_fly_command(CLI::App& app, Action& action) {
   cmd->add_option("--health-period", o->health_period_s, "Seconds between health lines (0: none)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
-#if SINU_HOST_MODES
   cmd->add_option("--emulate", o->emulate.dataset,
-                  "Host rehearsal: the sensors played by this dataset (ICM-20948 emulator, fake data-ready line, GPS "
+                  "Rehearsal (on the host, or on the board to time its CPU): the sensors played by this dataset (ICM-20948 emulator, fake data-ready line, GPS "
                   "bytes through a pty)");
   cmd->add_option("--speed", o->emulate.speed, "With --emulate: times real time (1: real time, 0: as fast as possible)")
       ->capture_default_str()
@@ -160,7 +159,6 @@ void add_fly_command(CLI::App& app, Action& action) {
   cmd->add_option("--fault", o->emulate.faults,
                   "With --emulate: faults KIND:START:DURATION[,...] in the dataset's t [s]; KIND i2c-stop, "
                   "gps-garbage, drdy-lost");
-#endif
   cmd->callback([&action, o] { action = [o] { return run_fly(*o); }; });
 }
 

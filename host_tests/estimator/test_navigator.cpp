@@ -194,7 +194,8 @@ TEST(Navigator, NeesAndNisInsideTheirChiSquareBoundsWithAMatchedModel) {
     z.lat_rad += kSigP * n01(rng) / 6.37e6;
     z.lon_rad += kSigP * n01(rng) / (6.37e6 * std::cos(z.lat_rad));
     z.h_m += kSigP * n01(rng);
-    z.v_ne_m_s += kSigV * Eigen::Vector2d(n01(rng), n01(rng));
+    const double ve = n01(rng), vn = n01(rng);  // east first: x86-64 GCC's order of the former unsequenced arguments
+    z.v_ne_m_s += kSigV * Eigen::Vector2d(vn, ve);
   }
   est::NavigatorConfig cfg;
   cfg.noise = model;
