@@ -18,8 +18,7 @@ int inspect_recording(const std::string& file) {
     std::fprintf(stderr, "%s\n", reader.message().c_str());
     return kExitFailure;
   }
-  constexpr std::size_t kKinds = 7;
-  std::array<std::uint64_t, kKinds> count{}, bytes{};
+  std::array<std::uint64_t, hal::rec::kKindEnd> count{}, bytes{};
   std::array<std::uint64_t, 5> i2c_status{};
   hal::TimeNs first = 0, last = 0, first_edge = 0, last_edge = 0;
   hal::rec::Record r;
@@ -53,6 +52,7 @@ int inspect_recording(const std::string& file) {
   std::printf("\n  serial rx      %llu chunks, %llu bytes\n", n(Kind::SerialRx),
               static_cast<unsigned long long>(bytes[static_cast<std::size_t>(Kind::SerialRx)] - count[static_cast<std::size_t>(Kind::SerialRx)]));
   std::printf("  serial tx      %llu chunks; baud changes %llu\n", n(Kind::SerialTx), n(Kind::SerialBaud));
+  if (n(Kind::EdgeTimeout) > 0) std::printf("  edge timeouts  %llu (the IMU was polled)\n", n(Kind::EdgeTimeout));
   if (reader.unknown_records() > 0)
     std::printf("  unknown kinds  %llu (skipped)\n", static_cast<unsigned long long>(reader.unknown_records()));
   if (reader.time_reversals() > 0)

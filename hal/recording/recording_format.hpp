@@ -29,6 +29,9 @@ enum class Kind : std::uint8_t {
   SerialBaud = 6, // payload: port, baud u32
   EdgeTimeout = 7,// payload: line; t_ns = when the wait for an edge gave up (the loop then polls the IMU)
 };
+/// One past the largest kind: arrays indexed by kind have this size.
+inline constexpr std::size_t kKindEnd = 8;
+static_assert(kKindEnd == static_cast<std::size_t>(Kind::EdgeTimeout) + 1, "kKindEnd follows the last kind");
 
 const char* to_string(Kind k);
 bool is_known(std::uint8_t kind);

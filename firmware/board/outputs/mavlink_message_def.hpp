@@ -84,7 +84,7 @@ constexpr std::size_t element_count(const FieldDef& f) { return f.array_length =
 
 /// Field indices (into `fields`) in wire order.
 template <std::size_t N>
-consteval std::array<std::size_t, N> wire_order(const MessageDef<N>& def) {
+constexpr std::array<std::size_t, N> wire_order(const MessageDef<N>& def) {
   std::array<std::size_t, N> order{};
   std::size_t k = 0;
   for (const std::size_t size : {8u, 4u, 2u, 1u})  // one pass per size: a stable sort
@@ -98,7 +98,7 @@ consteval std::array<std::size_t, N> wire_order(const MessageDef<N>& def) {
 
 /// Payload offset of every field, by XML index.
 template <std::size_t N>
-consteval std::array<std::size_t, N> offsets(const MessageDef<N>& def) {
+constexpr std::array<std::size_t, N> offsets(const MessageDef<N>& def) {
   std::array<std::size_t, N> at{};
   std::size_t offset = 0;
   for (const std::size_t i : wire_order(def)) {
@@ -109,7 +109,7 @@ consteval std::array<std::size_t, N> offsets(const MessageDef<N>& def) {
 }
 
 template <std::size_t N>
-consteval std::size_t payload_bytes(const MessageDef<N>& def, bool with_extensions) {
+constexpr std::size_t payload_bytes(const MessageDef<N>& def, bool with_extensions) {
   std::size_t bytes = 0;
   for (const FieldDef& f : def.fields)
     if (with_extensions || !f.extension) bytes += wire_size(f.type) * element_count(f);
@@ -117,7 +117,7 @@ consteval std::size_t payload_bytes(const MessageDef<N>& def, bool with_extensio
 }
 
 template <std::size_t N>
-consteval std::uint8_t crc_extra(const MessageDef<N>& def) {
+constexpr std::uint8_t crc_extra(const MessageDef<N>& def) {
   std::uint16_t crc = crc_accumulate(def.name, kCrcSeed);
   crc = crc_accumulate(' ', crc);
   for (const std::size_t i : wire_order(def)) {
