@@ -40,6 +40,21 @@ for model in gm ar; do
   printf '  %-5s %-26.3f %-26.3f %.2f\n' "$model" "$(rmse "$out/replay_$model" pos_h_m)" "$(rmse "$out/replay_$model" att_deg)" \
     "$(field "$out/outages_$model" outage_max_drift_h_rms_m)"
 done
+# The firmware as it flies: `sinu fly` on the emulated board (the flight's
+# registers, its data-ready edges, its GPS bytes through a pty), flat out,
+# with the calibration; its recording replays to the same navigation log.
+"$SINU" convert "$out/flight.raw" "$out/flight_as_chip"
+cat >"$out/fly.toml" <<TOML
+[navigation]
+calibration = "$out/calib.json"
+[outputs.log]
+path = "$out/fly_nav.csv"
+TOML
+"$SINU" fly --config "$out/fly.toml" --emulate "$out/flight_as_chip" --speed 0 --record "$out/fly.raw" \
+  --health-period 0 --stats
+"$SINU" replay --in "$out/fly.raw" --calib "$out/calib.json" --out "$out/fly_replay" --quiet
+cmp -s "$out/fly_nav.csv" "$out/fly_replay/nav.csv" && echo "fly: the recording replays to the flight's log, bit for bit" \
+  || echo "fly: WARNING: the recording's replay differs from the flight's log"
 # Model against measurements: does the replayed flight show an effect the model lacks?
 "$SINU" diagnose --in "$out/flight.raw" --truth "$out/flight/truth.csv" --calib "$out/calib.json" --model gm --rounds 1 \
   --out "$out/diagnose"
