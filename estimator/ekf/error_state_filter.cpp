@@ -63,6 +63,7 @@ void ErrorStateFilter::activate_deferred() {
     if (before.effect[i].active() || !s.active()) continue;
     const double sig = tuning_.initial_sigma[i];
     for (Eigen::Index j = 0; j < s.size; ++j) P_(s.start + j, s.start + j) = sig * sig;
+    apply_prior(static_cast<Effect>(i));
   }
 }
 
@@ -99,6 +100,26 @@ void ErrorStateFilter::build_transition(const PredictInput& in, int ar_steps, St
   couple(Effect::GyroBias, A, -1.0, Eigen::Vector3d::Ones());
   couple(Effect::AccelTempBias, V, 1.0, Eigen::Vector3d::Constant(in.temp_delta_degC));
   couple(Effect::GyroTempBias, A, -1.0, Eigen::Vector3d::Constant(in.temp_delta_degC));
+  // Misalignment (i, j): axis i senses axis j, so its error moves sensor axis i
+  // by the other axis's reading; g-sensitivity (i, j): gyro i by specific force j.
+  if (L.has(Effect::AccelMisalign)) {
+    for (Eigen::Index k = 0; k < 6; ++k) {
+      const auto [i, j] = kOffDiagonal[static_cast<std::size_t>(k)];
+      Phi.block(V, L.of(Effect::AccelMisalign).start + k, 3, 1) += C.col(i) * (in.specific_force_b_m_s2(j) * dt);
+    }
+  }
+  if (L.has(Effect::GyroMisalign)) {
+    for (Eigen::Index k = 0; k < 6; ++k) {
+      const auto [i, j] = kOffDiagonal[static_cast<std::size_t>(k)];
+      Phi.block(A, L.of(Effect::GyroMisalign).start + k, 3, 1) -= C.col(i) * (in.angular_rate_b_rad_s(j) * dt);
+    }
+  }
+  if (L.has(Effect::GyroGSensitivity)) {
+    for (Eigen::Index i = 0; i < 3; ++i)
+      for (Eigen::Index j = 0; j < 3; ++j)
+        Phi.block(A, L.of(Effect::GyroGSensitivity).start + 3 * i + j, 3, 1) -=
+            C.col(i) * (in.specific_force_b_m_s2(j) * dt);
+  }
   if (L.has(Effect::MagEarthField)) {  // e = dF + [F x] phi moves with phi: e_k+1 = e_k + [F x] (phi_k+1 - phi_k)
     const Eigen::Index M = L.of(Effect::MagEarthField).start;
     Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxStates> dphi = Phi.middleRows(A, 3);
@@ -238,6 +259,18 @@ void ErrorStateFilter::feedback(StateVec& dx, NavState& nav) {
   }
 
   add3(Effect::MagHardIron, mag_hard_iron_b_);
+  auto add_off_diagonal = [&](Effect e, Eigen::Matrix3d& M) {
+    if (!L.has(e)) return;
+    for (Eigen::Index k = 0; k < 6; ++k) {
+      const auto [i, j] = kOffDiagonal[static_cast<std::size_t>(k)];
+      M(i, j) += dx(L.of(e).start + k);
+    }
+  };
+  add_off_diagonal(Effect::AccelMisalign, accel_misalign_);
+  add_off_diagonal(Effect::GyroMisalign, gyro_misalign_);
+  if (L.has(Effect::GyroGSensitivity)) {
+    for (Eigen::Index k = 0; k < 9; ++k) gyro_g_(k / 3, k % 3) += dx(L.of(Effect::GyroGSensitivity).start + k);
+  }
   if (L.has(Effect::MagSoftIron)) mag_soft_iron_ += dx.segment(L.of(Effect::MagSoftIron).start, 6);
   if (L.has(Effect::GpsLatency)) latency_s_ += dx(L.of(Effect::GpsLatency).start);
   dx.setZero();
@@ -251,10 +284,12 @@ BodyRates ErrorStateFilter::compensate(const ImuSample& raw) const {
     bg(i) = sensor_hat_(hat_index(sensor_axis::kFirstGyro + i)) + gyro_bias_(i);
   }
   BodyRates out;
-  out.specific_force_b_m_s2 =
+  const Eigen::Vector3d f =
       (Eigen::Vector3d::Ones() - accel_scale_).cwiseProduct(raw.specific_force_b_m_s2 - ba - accel_temp_ * dT);
-  out.angular_rate_b_rad_s = (Eigen::Vector3d::Ones() - gyro_scale_)
-                                 .cwiseProduct(raw.angular_rate_b_rad_s - bg - gyro_temp_ * dT);
+  const Eigen::Vector3d w =
+      (Eigen::Vector3d::Ones() - gyro_scale_).cwiseProduct(raw.angular_rate_b_rad_s - bg - gyro_temp_ * dT);
+  out.specific_force_b_m_s2 = f - accel_misalign_ * f;
+  out.angular_rate_b_rad_s = w - gyro_misalign_ * w - gyro_g_ * out.specific_force_b_m_s2;
   return out;
 }
 
@@ -289,6 +324,15 @@ void ErrorStateFilter::add_axis_states(Eigen::Index axis, StateMask& mask) const
   for (const Effect e : accel ? std::array{Effect::AccelBias, Effect::AccelScale, Effect::AccelTempBias}
                               : std::array{Effect::GyroBias, Effect::GyroScale, Effect::GyroTempBias}) {
     if (L.has(e)) mask.set(static_cast<std::size_t>(L.of(e).start + i));
+  }
+  // The axis's row of its misalignment (and of the g-sensitivity for a gyro).
+  const Effect misalign = accel ? Effect::AccelMisalign : Effect::GyroMisalign;
+  if (L.has(misalign)) {
+    for (Eigen::Index k = 0; k < 6; ++k)
+      if (kOffDiagonal[static_cast<std::size_t>(k)][0] == i) mask.set(static_cast<std::size_t>(L.of(misalign).start + k));
+  }
+  if (!accel && L.has(Effect::GyroGSensitivity)) {
+    for (Eigen::Index j = 0; j < 3; ++j) mask.set(static_cast<std::size_t>(L.of(Effect::GyroGSensitivity).start + 3 * i + j));
   }
 }
 
@@ -416,8 +460,51 @@ double ErrorStateFilter::effect(Effect e, Eigen::Index i) const {
     case Effect::MagEarthField: return mag_field_n_(i);
     case Effect::MagHardIron: return mag_hard_iron_b_(i);
     case Effect::MagSoftIron: return mag_soft_iron_(i);
+    case Effect::AccelMisalign:
+      return accel_misalign_(kOffDiagonal[static_cast<std::size_t>(i)][0], kOffDiagonal[static_cast<std::size_t>(i)][1]);
+    case Effect::GyroMisalign:
+      return gyro_misalign_(kOffDiagonal[static_cast<std::size_t>(i)][0], kOffDiagonal[static_cast<std::size_t>(i)][1]);
+    case Effect::GyroGSensitivity: return gyro_g_(i / 3, i % 3);
   }
   return 0.0;
+}
+
+void ErrorStateFilter::set_effect(Effect e, Eigen::Index i, double v) {
+  const auto off = [i] { return kOffDiagonal[static_cast<std::size_t>(i)]; };
+  switch (e) {
+    case Effect::AccelScale: accel_scale_(i) = v; break;
+    case Effect::GyroScale: gyro_scale_(i) = v; break;
+    case Effect::LeverArm: lever_arm_b_(i) = v; break;
+    case Effect::GpsLatency: latency_s_ = v; break;
+    case Effect::AccelTempBias: accel_temp_(i) = v; break;
+    case Effect::GyroTempBias: gyro_temp_(i) = v; break;
+    case Effect::AccelBias: accel_bias_(i) = v; break;
+    case Effect::GyroBias: gyro_bias_(i) = v; break;
+    case Effect::GpsPositionBias: gps_bias_ned_(i) = v; break;
+    case Effect::MagEarthField: mag_field_n_(i) = v; break;
+    case Effect::MagHardIron: mag_hard_iron_b_(i) = v; break;
+    case Effect::MagSoftIron: mag_soft_iron_(i) = v; break;
+    case Effect::AccelMisalign: accel_misalign_(off()[0], off()[1]) = v; break;
+    case Effect::GyroMisalign: gyro_misalign_(off()[0], off()[1]) = v; break;
+    case Effect::GyroGSensitivity: gyro_g_(i / 3, i % 3) = v; break;
+  }
+}
+
+void ErrorStateFilter::apply_priors() {
+  for (std::size_t e = 0; e < kEffectCount; ++e) apply_prior(static_cast<Effect>(e));
+}
+
+void ErrorStateFilter::apply_prior(Effect e) {
+  const EffectPrior& p = tuning_.prior[static_cast<std::size_t>(e)];
+  if (!p.given || !layout_.has(e)) return;
+  const Slice& s = layout_.of(e);
+  for (Eigen::Index i = 0; i < s.size; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    set_effect(e, i, p.value[k]);
+    P_.row(s.start + i).setZero();
+    P_.col(s.start + i).setZero();
+    P_(s.start + i, s.start + i) = p.sigma[k] * p.sigma[k];
+  }
 }
 
 double ErrorStateFilter::effect_sigma(Effect e, Eigen::Index i) const {

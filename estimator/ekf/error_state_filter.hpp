@@ -41,6 +41,10 @@ class ErrorStateFilter {
 
   /// Propagates P and the sensor-state mean over one interval.
   void predict(const PredictInput& in);
+  /// The linearised error dynamics of one interval, x+ = Phi x + w, E[w w^T] =
+  /// diag(q), with `ar_steps` AR steps due (what predict() uses; the tests
+  /// check it against finite differences of the strapdown step).
+  void build_transition(const PredictInput& in, int ar_steps, StateMat& Phi, StateVec& q) const;
 
   /// Applies the correction dx (from fuse_measurement) to nav and to the
   /// sensor/effect estimates, then zeroes it.
@@ -58,6 +62,10 @@ class ErrorStateFilter {
   double sensor_error_sigma(Eigen::Index axis) const;
   /// Nominal value of effect component i (scale [-], lever arm [m], ...).
   double effect(Effect e, Eigen::Index i) const;
+  void set_effect(Effect e, Eigen::Index i, double value);
+  /// The tuning's given priors (EffectTuning::prior) for the active effects:
+  /// their values and sigmas (after set_lever_arm / set_gps_latency, which they override).
+  void apply_priors();
   double effect_sigma(Effect e, Eigen::Index i) const;
   Eigen::Vector3d lever_arm_b_m() const { return lever_arm_b_; }
   double gps_latency_s() const { return latency_s_; }
@@ -124,12 +132,12 @@ class ErrorStateFilter {
   double reference_temperature() const { return temp_ref_degC_; }
 
  private:
+  void apply_prior(Effect e);
   Eigen::Index hat_index(Eigen::Index axis) const { return axis * layout_.order; }
   /// P <- G P G^T for a 3-state block: a reset Jacobian.
   void rotate_block(const Slice& block, const Eigen::Matrix3d& G);
   /// Attitude noise Q_att with what it does to the invariant field error.
   void add_field_coupled_noise(const Eigen::Matrix3d& Q_att, bool attitude_block_too);
-  void build_transition(const PredictInput& in, int ar_steps, StateMat& Phi, StateVec& q) const;
 
   StateLayout layout_;
   SensorNoise noise_;
@@ -142,6 +150,9 @@ class ErrorStateFilter {
   Eigen::Vector3d accel_temp_ = Eigen::Vector3d::Zero(), gyro_temp_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d accel_bias_ = Eigen::Vector3d::Zero(), gyro_bias_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d lever_arm_b_ = Eigen::Vector3d::Zero();
+  // Off-diagonal misalignments (diagonal stays 0) and the gyro's g-sensitivity.
+  Eigen::Matrix3d accel_misalign_ = Eigen::Matrix3d::Zero(), gyro_misalign_ = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d gyro_g_ = Eigen::Matrix3d::Zero();
   Eigen::Vector3d gps_bias_ned_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d gps_bias_sigma_ned_m_ = Eigen::Vector3d::Ones();
   Eigen::Vector3d mag_field_n_ = Eigen::Vector3d::Zero(), mag_hard_iron_b_ = Eigen::Vector3d::Zero();

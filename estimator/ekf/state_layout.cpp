@@ -18,9 +18,18 @@ bool effect_from_name(const char* name, std::size_t length, Effect& out) {
 const char* effect_component_name(Effect e, Eigen::Index i) {
   static constexpr const char* kXyz[] = {"x", "y", "z"};
   static constexpr const char* kSymmetric[] = {"xx", "yy", "zz", "xy", "xz", "yz"};
-  const Eigen::Index dims = kEffectDims[static_cast<std::size_t>(e)];
-  if (i < 0 || i >= dims || dims == 1) return "";
-  return dims == 6 ? kSymmetric[i] : kXyz[i];
+  static constexpr const char* kOff[] = {"xy", "xz", "yx", "yz", "zx", "zy"};
+  static constexpr const char* kFull[] = {"xx", "xy", "xz", "yx", "yy", "yz", "zx", "zy", "zz"};
+  const Components c = spec(e).components;
+  if (i < 0 || i >= component_count(c)) return "";
+  switch (c) {
+    case Components::One: return "";
+    case Components::Xyz: return kXyz[i];
+    case Components::Symmetric: return kSymmetric[i];
+    case Components::OffDiagonal: return kOff[i];
+    case Components::Matrix: return kFull[i];
+  }
+  return "";
 }
 
 StateLayout StateLayout::make(Eigen::Index order, EffectSet effects, EffectSet deferred) {

@@ -23,6 +23,8 @@
 #include <cstdint>
 #include <Eigen/Core>
 
+#include "estimator/ekf/effect_vocabulary.hpp"
+
 namespace sinu::est {
 
 inline constexpr Eigen::Index kNavStates = 9;
@@ -35,28 +37,18 @@ inline constexpr Eigen::Index kFirstAccel = ax;
 inline constexpr Eigen::Index kFirstGyro = gx;
 }  // namespace sensor_axis
 
-/// Optional effect states, named as in the project's effect vocabulary.
-/// accel_bias / gyro_bias are random-constant (turn-on) biases: calib.json's
-/// GM/AR models describe the zero-mean part of the error of a static session,
-/// so a unit's per-power-on bias needs its own states.
-/// gps_position_bias: the receiver's slowly varying position error (first-order
-/// GM, NED; atmosphere, multipath, orbit errors) that a GST sigma does not
-/// separate from its white part.
-/// mag_earth_field (NED) and mag_hard_iron (body): the magnetometer's model
-/// m_b = C_bn F_n + h_b; the Earth field is a state so the declination and
-/// inclination need not be known (PX4 EKF2 does the same).
-/// mag_soft_iron: the symmetric deviation D of the soft-iron matrix S = I + D,
-/// m_b = (I + D) C_bn F_n + h_b; states D_xx, D_yy, D_zz, D_xy, D_xz, D_yz.
-enum class Effect : std::uint8_t {
-  AccelScale, GyroScale, LeverArm, GpsLatency, AccelTempBias, GyroTempBias, AccelBias, GyroBias,
-  GpsPositionBias, MagEarthField, MagHardIron, MagSoftIron
-};
-inline constexpr std::size_t kEffectCount = 12;
-inline constexpr std::array<const char*, kEffectCount> kEffectNames = {
-    "accel_scale", "gyro_scale", "lever_arm", "gps_latency", "accel_temp_bias", "gyro_temp_bias",
-    "accel_bias", "gyro_bias", "gps_position_bias", "mag_earth_field", "mag_hard_iron", "mag_soft_iron"};
-inline constexpr std::array<Eigen::Index, kEffectCount> kEffectDims = {3, 3, 3, 1, 3, 3, 3, 3, 3, 3, 3, 6};
-inline constexpr Eigen::Index kMaxEffectStates = 37;
+// Optional effect states: estimator/ekf/effect_vocabulary.hpp (one row each).
+// accel_bias / gyro_bias are random-constant (turn-on) biases: calib.json's
+// GM/AR models describe the zero-mean part of the error of a static session,
+// so a unit's per-power-on bias needs its own states.
+// gps_position_bias: the receiver's slowly varying position error (first-order
+// GM, NED; atmosphere, multipath, orbit errors) that a GST sigma does not
+// separate from its white part.
+// mag_earth_field (NED) and mag_hard_iron (body): the magnetometer's model
+// m_b = C_bn F_n + h_b; the Earth field is a state so the declination and
+// inclination need not be known (PX4 EKF2 does the same).
+// mag_soft_iron: the symmetric deviation D of the soft-iron matrix S = I + D,
+// m_b = (I + D) C_bn F_n + h_b; states D_xx, D_yy, D_zz, D_xy, D_xz, D_yz.
 
 inline constexpr Eigen::Index kMaxStates = kNavStates + kSensorAxes * kMaxArOrder + kMaxEffectStates;
 
@@ -79,13 +71,6 @@ struct EffectSet {
   void add(Effect e) { bits |= 1u << static_cast<unsigned>(e); }
   void remove(Effect e) { bits &= ~(1u << static_cast<unsigned>(e)); }
 };
-
-/// Name of component i of an effect's states: "" (one state), x/y/z, or
-/// xx/yy/zz/xy/xz/yz (mag_soft_iron).
-const char* effect_component_name(Effect e, Eigen::Index i);
-
-/// Looks an effect up by its vocabulary name; false if unknown.
-bool effect_from_name(const char* name, std::size_t length, Effect& out);
 
 /// Where every state lives. Effects can be deferred (PX4 EKF2 reserves its
 /// magnetometer states the same way): their slices are reserved after all

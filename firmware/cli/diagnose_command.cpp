@@ -19,14 +19,21 @@ namespace {
 // The baseline is the default model (replay::default_effects: turn-on biases,
 // the receiver's slowly varying error and its latency); --effects adds to it.
 constexpr const char* kDefaultBaseline = "";
-// Everything else the EKF can estimate (the magnetometer's states come with it).
-constexpr const char* kDefaultCandidates =
-    "lever_arm,gps_latency,accel_scale,gyro_scale,accel_temp_bias,gyro_temp_bias,mag_soft_iron";
+// Everything else the EKF can estimate (the vocabulary's diagnose candidates;
+// the magnetometer's states come with it).
+std::string default_candidates() {
+  std::string out;
+  for (const est::EffectSpec& e : est::kEffects)
+    if (e.diagnose_candidate) out += (out.empty() ? "" : ",") + std::string(e.name);
+  return out;
+}
 
 struct DiagnoseCliOptions {
   NavigationCliOptions nav{"gm", kDefaultBaseline};
   diagnose::DiagnoseOptions opt;
-  std::string candidates = kDefaultCandidates;
+  bool quiet = false;
+  bool apply = false;
+  std::string candidates = default_candidates();
 };
 
 int run(DiagnoseCliOptions& c) {
@@ -36,6 +43,8 @@ int run(DiagnoseCliOptions& c) {
     return kExitUsage;
   }
   c.opt.replay = c.nav.opt;
+  c.opt.progress = !c.quiet;
+  if (c.apply) c.opt.apply_path = c.opt.out_dir + "/model.json";
   diagnose::Diagnosis d;
   if (!diagnose::run_diagnosis(c.opt, d, error)) {
     std::fprintf(stderr, "sinu diagnose: %s\n", error.c_str());
@@ -57,6 +66,11 @@ void add_diagnose_command(CLI::App& app, Action& action) {
       ->check(CLI::Range(1, 5));
   sub->add_option("--out", c->opt.out_dir, "Output folder: report.md, diagnosis.json and the baseline replay (baseline/)")
       ->required();
+  sub->add_option("--threads", c->opt.threads, "Candidate replays at once (0: one per core)")->capture_default_str();
+  sub->add_flag("--quiet", c->quiet, "No progress lines on stderr");
+  sub->add_flag("--apply", c->apply,
+                "Write what was found (effects, estimates, sigmas) to OUT/model.json, for --model-file of replay, "
+                "diagnose and fly");
   sub->callback([&action, c] { action = [c] { return run(*c); }; });
 }
 

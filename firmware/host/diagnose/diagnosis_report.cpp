@@ -9,25 +9,6 @@ namespace sinu::diagnose {
 
 namespace {
 
-struct Unit {
-  const char* name;
-  double scale;  // state unit -> shown unit
-};
-
-/// Display units of the effect states (est::kEffectNames order).
-constexpr std::array<Unit, est::kEffectCount> kUnits = {{{"ppm", 1e6},
-                                                          {"ppm", 1e6},
-                                                          {"m", 1.0},
-                                                          {"s", 1.0},
-                                                          {"m/s^2/degC", 1.0},
-                                                          {"deg/s/degC", 180.0 / 3.141592653589793},
-                                                          {"m/s^2", 1.0},
-                                                          {"deg/s", 180.0 / 3.141592653589793},
-                                                          {"m", 1.0},
-                                                          {"uT", 1.0},
-                                                          {"uT", 1.0},
-                                                          {"-", 1.0}}};
-
 std::string fmt(const char* f, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v);
@@ -46,10 +27,10 @@ std::string estimate_text(const CandidateResult& c) {
   const auto e = static_cast<std::size_t>(c.effect);
   std::string out;
   for (std::size_t i = 0; i < c.estimate.size(); ++i) {
-    out += (i ? ", " : "") + fmt("%.4g", c.estimate[i] * kUnits[e].scale) + " +- " +
-           fmt("%.2g", c.sigma[i] * kUnits[e].scale);
+    out += (i ? ", " : "") + fmt("%.4g", c.estimate[i] * est::kEffects[e].display_scale) + " +- " +
+           fmt("%.2g", c.sigma[i] * est::kEffects[e].display_scale);
   }
-  return (c.estimate.size() > 1 ? "[" + out + "]" : out) + " " + kUnits[e].name;
+  return (c.estimate.size() > 1 ? "[" + out + "]" : out) + " " + est::kEffects[e].unit;
 }
 
 std::string nis_cell(const ComponentStats& s) { return s.count ? fmt("%.2f", s.nis()) : std::string("-"); }
@@ -98,6 +79,10 @@ std::string diagnosis_summary(const DiagnoseOptions& o, const Diagnosis& d) {
   if (d.missing.empty()) {
     out += "  no candidate effect explains the misfit (see report.md for each candidate's score)\n";
   }
+  for (const Diagnosis::Skipped& s : d.skipped)
+    out += "  not tested: " + std::string(est::spec(s.effect).name) + " (" + s.reason + ")\n";
+  if (!d.model_file.empty())
+    out += "  applied: " + d.model_file + " (start the next flight from it: --model-file, or navigation.model_file)\n";
   for (std::size_t r = 0; r < d.rounds.size(); ++r) {
     const Round& round = d.rounds[r];
     if (!round.found) continue;
@@ -179,11 +164,27 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
   nlohmann::json missing = nlohmann::json::array();
   for (est::Effect e : d.missing) missing.push_back(est::kEffectNames[static_cast<std::size_t>(e)]);
   j["missing_effects"] = missing;
+  nlohmann::json skipped = nlohmann::json::array();
+  if (!d.skipped.empty()) {
+    md << "## Not tested: the data cannot tell\n\n";
+    for (const Diagnosis::Skipped& s : d.skipped) {
+      md << "- `" << est::spec(s.effect).name << "`: " << s.reason << "\n";
+      skipped.push_back({{"effect", est::spec(s.effect).name}, {"reason", s.reason}});
+    }
+    md << "\n";
+  }
+  j["skipped"] = skipped;
+  if (!d.observability.empty()) {
+    md << "## Weakly observable in this flight\n\n";
+    for (const std::string& n : d.observability) md << "- " << n << "\n";
+    md << "\n";
+  }
+  j["weakly_observable"] = d.observability;
   md << "## Conclusion\n\n```\n" << diagnosis_summary(o, d) << "```\n";
   if (d.missing.empty()) {
-    md << "\nNo effect the EKF can estimate explains the misfit. Effects of the vocabulary it cannot estimate yet:\n"
-          "`accel_misalign`, `gyro_misalign` and `gyro_g_sensitivity` (misfit in turns and climbs, velocity first);\n"
-          "a magnetometer misfit that changes with heading beyond soft iron (a field that moves with the motors).\n";
+    md << "\nNo effect the EKF can estimate explains the misfit. What the vocabulary does not cover: a\n"
+          "magnetometer misfit that changes with heading beyond soft iron (a field that moves with the motors),\n"
+          "vibration rectification, a receiver whose error changes with the satellites in view.\n";
   }
   if (!d.rounds.empty()) {
     j["before"] = {{"rmse_pos_h_m", d.rounds.front().rmse_pos_h_m}, {"nll", d.rounds.front().stats.total_nll()}};
