@@ -63,6 +63,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   filter_.init(layout_of(cfg), cfg.noise, cfg.tuning, cfg.initial);
   filter_.set_lever_arm(cfg.lever_arm_b_m);
   filter_.set_gps_latency(cfg.gps_latency_s);
+  filter_.apply_priors();
   dx_ = StateVec::Zero(filter_.layout().dim);
 }
 

@@ -6,6 +6,7 @@
 
 #include "drivers/imu/icm20948_registers.hpp"
 #include "estimator/prefilter/wavelet_prefilter.hpp"
+#include "firmware/board/model_file.hpp"
 
 namespace sinu::board {
 
@@ -39,6 +40,7 @@ bool NavUnit::init(const NavUnitConfig& c, est::NavObserver* observer, std::stri
     prefilter_ = est::make_wavelet_prefilter(*est::wavelet::parse_wavelet(denoiser_.name), denoiser_.levels);
   }
   cfg.effects = c.effects;
+  if (!c.model_path.empty() && !read_model_file(c.model_path, cfg.effects, cfg.tuning.prior, error)) return false;
   cfg.use_mag = c.use_mag;
   cfg.vehicle = c.vehicle;
   cfg.mag_sigma_uT = c.mag_sigma_uT;

@@ -134,6 +134,8 @@ void add_fly_command(CLI::App& app, Action& action) {
   using board::FlyConfig;
   o->board.add(*cmd, "--calib", [](FlyConfig& c) -> auto& { return c.navigation.calibration; },
                "calib.json from sinu bench / sinu calibrate (navigation.calibration)");
+  o->board.add(*cmd, "--model-file", [](FlyConfig& c) -> auto& { return c.navigation.model_file; },
+               "Effects known from earlier flights, from sinu diagnose --apply (navigation.model_file)");
   o->board.add(*cmd, "--model", [](FlyConfig& c) -> auto& { return c.navigation.model; }, "Sensor-error model: gm or ar")
       ->check(CLI::IsMember({"gm", "ar"}));
   o->board.add(*cmd, "--vehicle", [](FlyConfig& c) -> auto& { return c.navigation.vehicle; }, "air or ground")

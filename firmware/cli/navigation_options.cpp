@@ -8,6 +8,8 @@ void NavigationCliOptions::add_to(CLI::App& sub) {
                  "replayed through the HAL and drivers")
       ->required();
   sub.add_option("--truth", opt.truth_path, "truth.csv to compare with (default: the dataset folder's, if any)");
+  sub.add_option("--model-file", opt.unit.model_path,
+                 "Effects known from an earlier flight, with values and sigmas (written by `sinu diagnose --apply`)");
   sub.add_option("--calib", opt.unit.calib_path,
                  "calib.json from `sinu calibrate`; omitted: built-in defaults (README, 'sinu replay')");
   sub.add_option("--model", model, "Sensor-error model: gm (GM1, 15 states) or ar (AR(p), 9+6p states)")

@@ -39,6 +39,9 @@ struct FlyConfig {
     // runs on its built-in defaults (as `sinu replay` without --calib), and
     // fly should say so when it starts. "": never use one.
     std::string calibration = "/var/lib/sinu/calib.json";
+    // A model file from `sinu diagnose --apply` (effects known from earlier
+    // flights, with values); "": none.
+    std::string model_file;
     std::string model = "ar";               // gm, ar
     std::vector<std::string> effects;        // effect states added to the defaults
     std::vector<std::string> without_effects;  // defaults removed ("none": all of them)

@@ -1,9 +1,17 @@
 #include "firmware/host/diagnose/diagnose_runner.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <atomic>
+#include <cstdio>
 #include <filesystem>
+#include <mutex>
+#include <thread>
 
+#include "firmware/board/effect_selection.hpp"
+#include "firmware/board/model_file.hpp"
 #include "firmware/host/diagnose/diagnosis_report.hpp"
 #include "firmware/host/replay/replay_files.hpp"
 
@@ -15,7 +23,11 @@ struct RunScore {
   InnovationStats stats;
   double rmse_pos_h_m = -1.0, rmse_att_deg = -1.0;
   std::vector<replay::EffectEstimate> effects;
+  replay::Excitation excitation;
 };
+
+constexpr const char* kAxis[] = {"x", "y", "z"};
+constexpr double kG = 9.80665;
 
 double or_minus_one(double v) { return std::isfinite(v) ? v : -1.0; }
 
@@ -34,6 +46,7 @@ bool replay_and_score(replay::ReplayOptions opt, est::EffectSet effects, const s
   out.rmse_pos_h_m = or_minus_one(result.rmse_pos_h_m());
   out.rmse_att_deg = or_minus_one(result.rmse_att_deg());
   out.effects = result.effects;
+  out.excitation = result.excitation;
   return true;
 }
 
@@ -44,6 +57,57 @@ std::uint64_t innovation_count(const InnovationStats& s) {
 }
 
 }  // namespace
+
+std::string untestable_reason(est::Effect effect, const replay::Excitation& x) {
+  switch (effect) {
+    case est::Effect::AccelTempBias:
+    case est::Effect::GyroTempBias:
+      if (x.temp_samples == 0) return "no temp column: a temperature coefficient cannot be told from the bias";
+      if (x.temp_span_degC() < 2.0)
+        return fmt::format("the temperature spans only {:.1f} degC (at least 2 degC separates a coefficient from the "
+                           "bias; a warm-up on the bench does)", x.temp_span_degC());
+      return "";
+    case est::Effect::MagSoftIron:
+      return x.mag_samples == 0 ? "no magnetometer samples" : "";
+    default: return "";
+  }
+}
+
+void observability_notes(const CandidateResult& c, const replay::Excitation& x, std::vector<std::string>& out) {
+  const est::EffectSpec& spec = est::spec(c.effect);
+  for (std::size_t i = 0; i < c.sigma_ratio.size(); ++i) {
+    if (!(c.sigma_ratio[i] > 0.5)) continue;
+    const auto k = static_cast<Eigen::Index>(i);
+    const std::string what = std::string(spec.name) + (est::kEffectDims[static_cast<std::size_t>(c.effect)] > 1
+                                                           ? std::string(" ") + est::effect_component_name(c.effect, k)
+                                                           : "");
+    std::string note = fmt::format("{}: the flight left {:.0f} % of its prior sigma (weakly observable here)", what,
+                                   100.0 * c.sigma_ratio[i]);
+    // What the effect needs: a scale the axis's own range, a misalignment or a
+    // g-sensitivity the other axis's.
+    Eigen::Index driver = k;
+    if (spec.components == est::Components::OffDiagonal) driver = est::kOffDiagonal[i][1];
+    if (spec.components == est::Components::Matrix) driver = k % 3;
+    const bool accel_driven = c.effect == est::Effect::AccelScale || c.effect == est::Effect::AccelMisalign ||
+                              c.effect == est::Effect::GyroGSensitivity;
+    const bool gyro_driven = c.effect == est::Effect::GyroScale || c.effect == est::Effect::GyroMisalign;
+    if (accel_driven && driver < 3) {
+      const double lo = x.f_min_m_s2(driver), hi = x.f_max_m_s2(driver);
+      note += fmt::format("; specific force {} stayed within {:.1f}..{:.1f} m/s^2 (a span of {:.2f} g): a pull-up, a "
+                          "push-over or a bench tumble test (six positions) separates it from the bias",
+                          kAxis[driver], lo, hi, (hi - lo) / kG);
+    } else if (gyro_driven && driver < 3) {
+      const double span = std::max(std::abs(x.w_min_rad_s(driver)), std::abs(x.w_max_rad_s(driver))) * est::kRadToDeg;
+      note += fmt::format("; rate {} never exceeded {:.0f} deg/s: faster turns or rolls about that axis reveal it",
+                          kAxis[driver], span);
+    } else if (c.effect == est::Effect::LeverArm) {
+      note += ": turns (the arm's velocity w x l) and a level attitude change reveal it";
+    } else if (c.effect == est::Effect::MagSoftIron) {
+      note += ": a full turn in heading (and some bank) reveals it";
+    }
+    out.push_back(note);
+  }
+}
 
 bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error) {
   namespace fs = std::filesystem;
@@ -97,37 +161,72 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
     round.rmse_pos_h_m = current.rmse_pos_h_m;
     round.rmse_att_deg = current.rmse_att_deg;
     const double ln_n = std::log(std::max<double>(2.0, static_cast<double>(innovation_count(current.stats))));
-    std::vector<RunScore> scores;
+    // The candidates this round tries, then their replays in parallel (one per
+    // core; each reads the data itself and shares nothing but `tuned`).
+    std::vector<est::Effect> trials;
     for (std::size_t e = 0; e < est::kEffectCount; ++e) {
       const auto effect = static_cast<est::Effect>(e);
       if (!o.candidates.has(effect) || model.has(effect)) continue;
-      est::EffectSet trial = model;
-      trial.add(effect);
-      RunScore score;
-      if (!replay_and_score(tuned.replay, trial, "", score, error)) return false;
+      if (const std::string why = untestable_reason(effect, current.excitation); !why.empty()) {
+        if (r == 0) out.skipped.push_back({effect, why});
+        continue;
+      }
+      trials.push_back(effect);
+    }
+    std::vector<RunScore> scores(trials.size());
+    std::vector<std::string> errors(trials.size());
+    std::vector<char> ok(trials.size(), 0);
+    std::atomic<std::size_t> next{0}, done{0};
+    std::mutex progress;
+    auto worker = [&] {
+      for (std::size_t i = next++; i < trials.size(); i = next++) {
+        est::EffectSet trial = model;
+        trial.add(trials[i]);
+        ok[i] = replay_and_score(tuned.replay, trial, "", scores[i], errors[i]) ? 1 : 0;
+        const std::lock_guard<std::mutex> lock(progress);
+        if (o.progress)
+          std::fprintf(stderr, "diagnose: round %d: %zu/%zu candidates (%s)\n", r + 1, ++done, trials.size(),
+                       est::spec(trials[i]).name);
+      }
+    };
+    const std::size_t threads =
+        std::min<std::size_t>(trials.size(), std::max(1u, o.threads ? o.threads : std::thread::hardware_concurrency()));
+    std::vector<std::thread> pool;
+    for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (std::thread& t : pool) t.join();
+    for (std::size_t i = 0; i < trials.size(); ++i) {
+      if (!ok[i]) {
+        error = errors[i];
+        return false;
+      }
+    }
+    for (std::size_t i = 0; i < trials.size(); ++i) {
+      const est::Effect effect = trials[i];
+      const RunScore& score = scores[i];
       CandidateResult c;
       c.effect = effect;
       c.nll_gain = current.stats.total_nll() - score.stats.total_nll();
-      c.penalty = 0.5 * static_cast<double>(est::kEffectDims[e]) * ln_n;
+      c.penalty = 0.5 * static_cast<double>(est::kEffectDims[static_cast<std::size_t>(effect)]) * ln_n;
       for (const replay::EffectEstimate& eff : score.effects) {
         if (eff.effect != effect) continue;
-        for (std::size_t i = 0; i < eff.estimate.size(); ++i) {
-          const double v = eff.estimate[i], s = eff.sigma[i];
+        for (std::size_t k = 0; k < eff.estimate.size(); ++k) {
+          const double v = eff.estimate[k], sg = eff.sigma[k];
           c.estimate.push_back(v);
-          c.sigma.push_back(s);
+          c.sigma.push_back(sg);
+          c.sigma_ratio.push_back(sg / est::spec(effect).initial_sigma);
           // Distance from what the model assumed without the states (the configured latency
           // and lever arm, zero otherwise), in sigmas.
           double prior = 0.0;
           if (effect == est::Effect::GpsLatency) prior = o.replay.unit.gps_latency_s;
-          if (effect == est::Effect::LeverArm) prior = o.replay.unit.lever_arm_b_m(static_cast<Eigen::Index>(i));
-          if (s > 0.0) c.significance = std::max(c.significance, std::abs(v - prior) / s);
+          if (effect == est::Effect::LeverArm) prior = o.replay.unit.lever_arm_b_m(static_cast<Eigen::Index>(k));
+          if (sg > 0.0) c.significance = std::max(c.significance, std::abs(v - prior) / sg);
         }
       }
       c.stats = score.stats;
       c.rmse_pos_h_m = score.rmse_pos_h_m;
       c.rmse_att_deg = score.rmse_att_deg;
       round.candidates.push_back(c);
-      scores.push_back(std::move(score));
     }
     // Best first: those that explain the data, by likelihood gain beyond the penalty.
     std::vector<std::size_t> order(round.candidates.size());
@@ -149,6 +248,10 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
     out.rounds.push_back(std::move(round));
     if (!out.rounds.back().found) break;
   }
+  // Candidates the last round could not pin down: say so, and what would.
+  if (!out.rounds.empty()) {
+    for (const CandidateResult& c : out.rounds.back().candidates) observability_notes(c, current.excitation, out.observability);
+  }
   // The final model's score, for the "after" column.
   Round last;
   last.model = model;
@@ -156,6 +259,18 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
   last.rmse_pos_h_m = current.rmse_pos_h_m;
   last.rmse_att_deg = current.rmse_att_deg;
   if (out.rounds.empty() || out.rounds.back().found) out.rounds.push_back(last);
+  if (!o.apply_path.empty()) {
+    // The final model's effects beyond the defaults, with the final run's
+    // estimates: the next flight (replay, diagnose, fly) starts from them.
+    std::vector<board::ModelEffect> found;
+    const est::EffectSet defaults = board::default_effects();
+    for (const replay::EffectEstimate& e : current.effects) {
+      if (defaults.has(e.effect) || !model.has(e.effect)) continue;
+      found.push_back({e.effect, e.estimate, e.sigma});
+    }
+    if (!board::write_model_file(o.apply_path, found, "sinu diagnose " + o.replay.in_dir, error)) return false;
+    out.model_file = o.apply_path;
+  }
   return write_diagnosis(tuned, out, error);
 }
 

@@ -19,6 +19,7 @@
 #include "estimator/ekf/state_layout.hpp"
 #include "firmware/host/diagnose/innovation_stats.hpp"
 #include "firmware/host/replay/replay_options.hpp"
+#include "firmware/host/replay/replay_result.hpp"
 
 namespace sinu::diagnose {
 
@@ -30,6 +31,9 @@ struct DiagnoseOptions {
   double min_significance = 3.0;  // |estimate| / sigma of at least one component
   bool tune_mag_sigma = true;     // scale the magnetometer sigma so its NIS is 1 before comparing
   bool tune_process_noise = true; // without calib.json: pick the default model's scale by likelihood
+  std::string apply_path;         // non-empty: write the final model's effects there (a model file)
+  unsigned threads = 0;           // candidate replays at once (0: one per core)
+  bool progress = false;          // a line on stderr per candidate replay done
 };
 
 struct CandidateResult {
@@ -38,6 +42,7 @@ struct CandidateResult {
   double penalty = 0.0;      // BIC: 0.5 k ln(N)
   double significance = 0.0; // max |estimate - assumed value| / sigma
   std::vector<double> estimate, sigma;
+  std::vector<double> sigma_ratio;  // per component: posterior / prior sigma (near 1: the flight did not reveal it)
   InnovationStats stats;
   double rmse_pos_h_m = -1.0, rmse_att_deg = -1.0;  // against truth.csv (-1: none)
   bool explains(double min_significance) const { return nll_gain > penalty && significance >= min_significance; }
@@ -58,7 +63,22 @@ struct Diagnosis {
   double process_noise_scale = 1.0;  // chosen by likelihood (1 with a calib.json)
   std::vector<Round> rounds;
   std::vector<est::Effect> missing;  // in the order found
+  struct Skipped {
+    est::Effect effect{};
+    std::string reason;  // why the data cannot test it
+  };
+  std::vector<Skipped> skipped;           // candidates not tried
+  std::vector<std::string> observability; // weakly observable components, and what would reveal them
+  std::string model_file;                 // written by --apply ("" if not)
 };
+
+/// Why this flight cannot test `effect` ("" if it can): no temperature, too
+/// little temperature change, no magnetometer.
+std::string untestable_reason(est::Effect effect, const replay::Excitation& x);
+
+/// Notes for the components of a candidate the flight barely constrained
+/// (posterior sigma above half the prior), with what would reveal them.
+void observability_notes(const CandidateResult& c, const replay::Excitation& x, std::vector<std::string>& out);
 
 /// Runs the replays (in memory; the baseline's files under out_dir/baseline)
 /// and writes report.md and diagnosis.json into out_dir. False with a one-line `error` on bad input.

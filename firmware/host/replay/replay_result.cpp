@@ -1,9 +1,23 @@
 #include "firmware/host/replay/replay_result.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace sinu::replay {
+
+void Excitation::add(const est::ImuSample& s) {
+  f_min_m_s2 = f_min_m_s2.cwiseMin(s.specific_force_b_m_s2);
+  f_max_m_s2 = f_max_m_s2.cwiseMax(s.specific_force_b_m_s2);
+  w_min_rad_s = w_min_rad_s.cwiseMin(s.angular_rate_b_rad_s);
+  w_max_rad_s = w_max_rad_s.cwiseMax(s.angular_rate_b_rad_s);
+  if (s.has_temp) {
+    ++temp_samples;
+    temp_min_degC = std::min(temp_min_degC, s.temp_degC);
+    temp_max_degC = std::max(temp_max_degC, s.temp_degC);
+  }
+  if (s.has_mag) ++mag_samples;
+}
 
 namespace {
 double rms(double sum, std::uint64_t n) { return n ? std::sqrt(sum / static_cast<double>(n)) : NAN; }

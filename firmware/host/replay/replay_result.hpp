@@ -21,6 +21,17 @@ struct EffectEstimate {
   std::vector<double> estimate, sigma;  // per component
 };
 
+/// What the flight excited: the range of each IMU axis, the temperature, and
+/// whether there was a magnetometer (diagnose: which effects the data can test).
+struct Excitation {
+  Eigen::Vector3d f_min_m_s2 = Eigen::Vector3d::Constant(1e300), f_max_m_s2 = Eigen::Vector3d::Constant(-1e300);
+  Eigen::Vector3d w_min_rad_s = Eigen::Vector3d::Constant(1e300), w_max_rad_s = Eigen::Vector3d::Constant(-1e300);
+  double temp_min_degC = 1e300, temp_max_degC = -1e300;
+  std::uint64_t temp_samples = 0, mag_samples = 0;
+  void add(const est::ImuSample& s);
+  double temp_span_degC() const { return temp_samples ? temp_max_degC - temp_min_degC : 0.0; }
+};
+
 struct GnssFeedCounters {
   std::uint64_t epochs = 0, used = 0, dropped_outage = 0, dropped_period = 0;
 };
@@ -35,6 +46,7 @@ struct ReplayResult {
   std::vector<EffectEstimate> effects;  // the effects switched on at the end, in layout order
   std::array<double, est::kSensorAxes> sensor_error{}, sensor_error_sigma{};
   std::uint64_t imu_samples = 0;
+  Excitation excitation;
   double duration_s = 0.0;
   bool aligned = false;
   double aligned_at_s = 0.0;      // time of the first solution (valid when aligned)

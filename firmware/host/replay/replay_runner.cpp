@@ -153,10 +153,12 @@ class UnitFeed final : public ReplayFeed {
     if (std::isnan(t_first)) t_first = s.t_s;
     t_last = s.t_s;
     ++imu_samples;
+    excitation.add(s);
   }
 
   GnssFeedCounters gnss;
   std::uint64_t imu_samples = 0;
+  Excitation excitation;
   double t_first = NAN, t_last = NAN;
 
  private:
@@ -232,6 +234,7 @@ bool run_replay(const ReplayOptions& opt, std::span<ReplayListener* const> liste
                    " with a non-finite value were dropped; the first: " + result.source.first_anomaly;
   }
   result.imu_samples = feed.imu_samples;
+  result.excitation = feed.excitation;
   result.duration_s = std::isnan(feed.t_first) ? 0.0 : feed.t_last - feed.t_first;
   result.gnss = feed.gnss;
   result.aligned_at_s = std::isnan(observer.first_t()) ? 0.0 : observer.first_t();

@@ -1,0 +1,76 @@
+#include "firmware/board/model_file.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+namespace sinu::board {
+
+namespace {
+
+bool numbers(const nlohmann::json& v, std::size_t n, bool positive, std::array<double, 9>& out) {
+  if (!v.is_array() || v.size() != n) return false;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!v[i].is_number()) return false;
+    out[i] = v[i].get<double>();
+    if (!std::isfinite(out[i]) || (positive && !(out[i] > 0.0))) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool read_model_file(const std::string& path, est::EffectSet& effects,
+                     std::array<est::EffectPrior, est::kEffectCount>& priors, std::string& error) {
+  std::ifstream in(path);
+  if (!in) {
+    error = path + ": cannot open the model file";
+    return false;
+  }
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("effects") || !j["effects"].is_object()) {
+    error = path + ": not a model file (a JSON object with an \"effects\" object)";
+    return false;
+  }
+  for (const auto& [name, v] : j["effects"].items()) {
+    est::Effect e{};
+    if (!est::effect_from_name(name.c_str(), name.size(), e)) {
+      error = path + ": effects." + name + ": unknown effect";
+      return false;
+    }
+    const auto n = static_cast<std::size_t>(est::kEffectDims[static_cast<std::size_t>(e)]);
+    est::EffectPrior p;
+    p.given = true;
+    if (!v.is_object() || !v.contains("estimate") || !numbers(v["estimate"], n, false, p.value)) {
+      error = path + ": effects." + name + ".estimate: expected " + std::to_string(n) + " finite numbers";
+      return false;
+    }
+    if (!v.contains("sigma") || !numbers(v["sigma"], n, true, p.sigma)) {
+      error = path + ": effects." + name + ".sigma: expected " + std::to_string(n) + " positive numbers";
+      return false;
+    }
+    effects.add(e);
+    priors[static_cast<std::size_t>(e)] = p;
+  }
+  return true;
+}
+
+bool write_model_file(const std::string& path, const std::vector<ModelEffect>& effects, const std::string& source,
+                      std::string& error) {
+  nlohmann::json j;
+  j["source"] = source;
+  j["effects"] = nlohmann::json::object();
+  for (const ModelEffect& m : effects) {
+    j["effects"][est::spec(m.effect).name] = {{"estimate", m.estimate}, {"sigma", m.sigma},
+                                              {"unit", "state units (see effect_vocabulary.hpp)"}};
+  }
+  std::ofstream out(path);
+  out << j.dump(2) << "\n";
+  if (!out) {
+    error = path + ": cannot write the model file";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace sinu::board

@@ -1,0 +1,33 @@
+#pragma once
+// The model file: effects a unit is known to have, with their values and
+// sigmas, so a flight starts from what an earlier one found. `sinu diagnose
+// --apply` writes it; `replay`, `diagnose` (--model-file) and `fly`
+// (navigation.model_file) read it.
+//   {"effects": {"gyro_misalign": {"estimate": [6 numbers], "sigma": [6 numbers]},
+//                "gps_latency": {"estimate": [0.21], "sigma": [0.004]}, ...},
+//    "source": "what wrote it"}
+// Estimates are in the estimator's state units (effect_vocabulary.hpp: scale
+// [-], misalignment [rad], g-sensitivity [rad/s per m/s^2], ...), components
+// in its order.
+#include <string>
+#include <vector>
+
+#include "estimator/ekf/effect_tuning.hpp"
+
+namespace sinu::board {
+
+struct ModelEffect {
+  est::Effect effect{};
+  std::vector<double> estimate, sigma;
+};
+
+/// Reads `path`: adds its effects to `effects` and their priors to `priors`.
+/// False with `error` naming the file and the key on any problem.
+bool read_model_file(const std::string& path, est::EffectSet& effects,
+                     std::array<est::EffectPrior, est::kEffectCount>& priors, std::string& error);
+
+/// Writes the effects (estimates and sigmas) as a model file.
+bool write_model_file(const std::string& path, const std::vector<ModelEffect>& effects, const std::string& source,
+                      std::string& error);
+
+}  // namespace sinu::board

@@ -1,0 +1,191 @@
+#!/usr/bin/python3
+"""Does `sinu diagnose` name the right effect? An evaluation, not a unit test.
+
+Simulates flights with one hidden effect each (every effect of the simulator's
+vocabulary, random magnitudes, seeds and trajectories), clean flights, and
+flights with two effects; each with a one-hour bench session of the same unit
+(same seed) for `sinu calibrate`. Runs `sinu diagnose --apply` WITHOUT
+truth.csv, then scores:
+  - top-1: the first effect named is the hidden one (mag_hard_iron, which the
+    model always carries, and clean flights: right when nothing is named);
+  - after --apply: the outage drift of a replay that starts from the model
+    file, against a replay given the true effect's states (truth only here);
+  - two effects: both named in two rounds.
+Writes a markdown report (tables) to --out.
+
+  /usr/bin/python3 tools/diagnose_eval.py --sinu build/release/firmware/sinu \
+      --work /tmp/diagnose_eval --per-effect 10 --clean 20 --pairs 20 --out docs/diagnose_eval.md
+"""
+import argparse
+import collections
+import concurrent.futures
+import json
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+
+EFFECTS = ["accel_scale", "gyro_scale", "accel_misalign", "gyro_misalign", "lever_arm", "gps_latency",
+           "accel_temp_bias", "gyro_temp_bias", "mag_hard_iron", "mag_soft_iron", "gyro_g_sensitivity"]
+# In the default model (the latency) or always carried with a magnetometer (the hard
+# iron): the right answer is "nothing missing", the baseline estimates them.
+CARRIED = {"mag_hard_iron", "gps_latency"}
+DURATION_S = 1200
+# Eight 30-s outages spread over the flight (after the first 3 minutes), from its start.
+OUTAGE_STARTS = list(range(180, DURATION_S - 60, (DURATION_S - 240) // 8))[:8]
+
+
+def outages(t0_s):
+    return ",".join(f"{t0_s + t:.3f}:30" for t in OUTAGE_STARTS)
+
+
+def run(cmd, **kw):
+    return subprocess.run(cmd, check=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, **kw)
+
+
+def simulate(sinu, work, seed, k):
+    """A flight with k random effects: (folder, hidden effect names, its start time)."""
+    d = os.path.join(work, f"s{seed}_k{k}")
+    hidden = d + "_hidden.json"
+    shutil.rmtree(d, ignore_errors=True)
+    run([sinu, "simulate", "flight", "--seed", str(seed), "--duration", str(DURATION_S), "--effects-random", str(k),
+         "--hidden-out", hidden, "--out", d])
+    h = json.load(open(hidden))
+    return d, sorted(h.get("effects", {}).keys()), h["t0_s"]
+
+
+def outage_drift(sinu, data, truth, t0_s, out, extra):
+    run([sinu, "replay", "--in", data, "--truth", truth, "--calib", extra["calib"], "--outage", outages(t0_s), "--quiet",
+         "--out", out] + extra.get("args", []))
+    return json.load(open(os.path.join(out, "summary.json"))).get("outage_max_drift_h_rms_m")
+
+
+def evaluate(sinu, work, seed, k, names, t0_s, flight):
+    truth = flight + "_truth.csv"
+    if os.path.exists(os.path.join(flight, "truth.csv")):
+        os.replace(os.path.join(flight, "truth.csv"), truth)
+    bench = os.path.join(work, f"bench{seed}")
+    calib = bench + "_calib.json"
+    if not os.path.exists(calib):
+        run([sinu, "simulate", "static", "--seed", str(seed), "--hours", "1", "--out", bench])
+        run([sinu, "calibrate", "--in", bench, "--out", calib])
+        shutil.rmtree(bench, ignore_errors=True)
+    diag = flight + "_diag"
+    run([sinu, "diagnose", "--in", flight, "--calib", calib, "--rounds", str(max(1, k)), "--threads", "1", "--quiet",
+         "--apply", "--out", diag])
+    dj = json.load(open(os.path.join(diag, "diagnosis.json")))
+    named = dj.get("missing_effects", [])
+    row = {"seed": seed, "k": k, "hidden": names, "named": named}
+    if k >= 1:
+        base = {"calib": calib}
+        row["drift_baseline"] = outage_drift(sinu, flight, truth, t0_s, diag + "_r0", base)
+        row["drift_applied"] = outage_drift(sinu, flight, truth, t0_s, diag + "_r1",
+                                            {"calib": calib, "args": ["--model-file", os.path.join(diag, "model.json")]})
+        true_states = [n for n in names if n not in CARRIED]
+        row["drift_true_model"] = outage_drift(sinu, flight, truth, t0_s, diag + "_r2",
+                                               {"calib": calib, "args": ["--effects", ",".join(true_states)]}
+                                               if true_states else {"calib": calib})
+    shutil.rmtree(diag + "_r0", ignore_errors=True)
+    shutil.rmtree(diag + "_r1", ignore_errors=True)
+    shutil.rmtree(diag + "_r2", ignore_errors=True)
+    return row
+
+
+def correct(row):
+    hidden = [n for n in row["hidden"] if n not in CARRIED]
+    if not hidden:
+        return not row["named"]
+    if row["k"] == 1:
+        return bool(row["named"]) and row["named"][0] == hidden[0]
+    return set(hidden) <= set(row["named"])
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--sinu", default="build/release/firmware/sinu")
+    ap.add_argument("--work", default="/tmp/diagnose_eval")
+    ap.add_argument("--per-effect", type=int, default=10)
+    ap.add_argument("--clean", type=int, default=20)
+    ap.add_argument("--pairs", type=int, default=20)
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--first-seed", type=int, default=1000)
+    ap.add_argument("--out", default="-")
+    a = ap.parse_args()
+    os.makedirs(a.work, exist_ok=True)
+
+    # Pick flights: seeds in order, kept while their drawn effect still needs flights.
+    need = collections.Counter({e: a.per_effect for e in EFFECTS})
+    jobs, seed = [], a.first_seed
+    while sum(need.values()) > 0 and seed < a.first_seed + 100 * len(EFFECTS) * a.per_effect:
+        d, names, t0 = simulate(a.sinu, a.work, seed, 1)
+        if names and need[names[0]] > 0:
+            need[names[0]] -= 1
+            jobs.append((seed, 1, names, t0, d))
+        else:
+            shutil.rmtree(d, ignore_errors=True)
+        seed += 1
+    for i in range(a.clean):
+        d, names, t0 = simulate(a.sinu, a.work, seed + i, 0)
+        jobs.append((seed + i, 0, names, t0, d))
+    seed += a.clean
+    for i in range(a.pairs):
+        d, names, t0 = simulate(a.sinu, a.work, seed + i, 2)
+        jobs.append((seed + i, 2, names, t0, d))
+
+    rows = []
+    with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
+        futures = [pool.submit(evaluate, a.sinu, a.work, s, k, n, t0, d) for s, k, n, t0, d in jobs]
+        for i, f in enumerate(concurrent.futures.as_completed(futures)):
+            rows.append(f.result())
+            print(f"diagnose_eval: {i + 1}/{len(jobs)} flights", file=sys.stderr)
+    json.dump(rows, open(os.path.join(a.work, "rows.json"), "w"), indent=1)
+
+    out = [f"Flights of {DURATION_S // 60} min (`sinu simulate flight --effects-random K`, seeds {a.first_seed}..), "
+           "each with a 1-h bench session of the same unit for `sinu calibrate`; `sinu diagnose --calib --apply` "
+           f"without truth.csv; outage drift: RMS of the largest horizontal drift in eight 30-s outages (at "
+           f"{', '.join(str(t) for t in OUTAGE_STARTS)} s into the flight).", "",
+           "| hidden effect | flights | named first (right) | top-1 | named instead | outage drift RMS: baseline / after --apply / true model [m] |",
+           "|---|---|---|---|---|---|"]
+    one = [r for r in rows if r["k"] == 1]
+    total_right = 0
+    for e in EFFECTS:
+        rs = [r for r in one if r["hidden"] == [e]]
+        if not rs:
+            continue
+        right = sum(correct(r) for r in rs)
+        total_right += right
+        instead = collections.Counter(r["named"][0] if r["named"] else "nothing" for r in rs if not correct(r))
+        med = lambda key: statistics.median(r[key] for r in rs if r.get(key) is not None) if any(r.get(key) is not None for r in rs) else float("nan")
+        out.append(f"| `{e}` | {len(rs)} | {right} | {100 * right / len(rs):.0f} % | "
+                   f"{', '.join(f'{n} x{c}' for n, c in instead.most_common()) or '-'} | "
+                   f"{med('drift_baseline'):.2f} / {med('drift_applied'):.2f} / {med('drift_true_model'):.2f} |")
+    if one:
+        out.append(f"| **all** | {len(one)} | {total_right} | **{100 * total_right / len(one):.0f} %** | | |")
+    clean = [r for r in rows if r["k"] == 0]
+    if clean:
+        ok = sum(correct(r) for r in clean)
+        falsely = collections.Counter(r["named"][0] for r in clean if r["named"])
+        out += ["", f"Clean flights: adequate (nothing named) in {ok} of {len(clean)} ({100 * ok / len(clean):.0f} %)"
+                + (f"; named instead: {', '.join(f'{n} x{c}' for n, c in falsely.most_common())}" if falsely else "") + "."]
+    applied = [r for r in one if r.get("drift_applied") and r.get("drift_true_model")]
+    if applied:
+        within = sum(r["drift_applied"] <= 1.15 * r["drift_true_model"] for r in applied)
+        out += ["", f"After --apply the outage drift is within 15 % of the true model's in {within} of {len(applied)} "
+                    f"one-effect flights ({100 * within / len(applied):.0f} %)."]
+    pairs = [r for r in rows if r["k"] == 2]
+    if pairs:
+        ok = sum(correct(r) for r in pairs)
+        out += ["", "| two hidden effects | named (rounds of 2) | both found |", "|---|---|---|"]
+        for r in sorted(pairs, key=lambda r: r["seed"]):
+            out.append(f"| {', '.join(r['hidden'])} | {', '.join(r['named']) or 'nothing'} | {'yes' if correct(r) else 'no'} |")
+        out.append(f"| **both found** | | **{ok} of {len(pairs)} ({100 * ok / len(pairs):.0f} %)** |")
+    text = "\n".join(out) + "\n"
+    if a.out == "-":
+        sys.stdout.write(text)
+    else:
+        open(a.out, "w").write(text)
+
+
+if __name__ == "__main__":
+    main()
