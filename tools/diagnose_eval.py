@@ -14,7 +14,8 @@ truth.csv, then scores:
 Writes a markdown report (tables) to --out.
 
   /usr/bin/python3 tools/diagnose_eval.py --sinu build/release/firmware/sinu \
-      --work /tmp/diagnose_eval --per-effect 10 --clean 20 --pairs 20 --out docs/diagnose_eval.md
+      --work /tmp/diagnose_eval --per-effect 10 --clean 20 --pairs 20 --out docs/diagnose.md
+(about 10 minutes on 2 cores; the tables go between the markers in docs/diagnose.md)
 """
 import argparse
 import collections
@@ -183,8 +184,13 @@ def main():
     text = "\n".join(out) + "\n"
     if a.out == "-":
         sys.stdout.write(text)
-    else:
-        open(a.out, "w").write(text)
+        return
+    # Into the file between the markers when it has them (docs/diagnose.md), else the whole file.
+    begin, end = "<!-- diagnose_eval: begin -->\n", "<!-- diagnose_eval: end -->"
+    old = open(a.out).read() if os.path.exists(a.out) else ""
+    if begin in old and end in old:
+        text = old[:old.index(begin) + len(begin)] + text + old[old.index(end):]
+    open(a.out, "w").write(text)
 
 
 if __name__ == "__main__":

@@ -4,6 +4,7 @@
 // it must name nothing.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -139,9 +140,9 @@ TEST(Diagnose, NamesAHiddenGyroMisalignmentAndTheAppliedModelLowersTheOutageDrif
   std::getline(imu, line);
   std::getline(imu, line);
   const double t0 = std::stod(line);
-  std::string outages;
-  for (const double at : {300.0, 500.0, 700.0, 900.0})
-    outages += (outages.empty() ? "" : ",") + std::to_string(t0 + at) + ":30";
+  char outages[160];
+  std::snprintf(outages, sizeof outages, "%.3f:30,%.3f:30,%.3f:30,%.3f:30", t0 + 300.0, t0 + 500.0, t0 + 700.0,
+                t0 + 900.0);
   auto replay = [&](const std::string& name, std::vector<std::string> extra) {
     std::vector<std::string> a = {"replay", "--in", ds, "--truth", dir.file("truth.csv"), "--calib", calib,
                                   "--outage", outages, "--quiet", "--out", dir.file(name)};
@@ -157,18 +158,20 @@ TEST(Diagnose, NamesAHiddenGyroMisalignmentAndTheAppliedModelLowersTheOutageDrif
   EXPECT_LT(applied, 1.15 * true_model);
 }
 
-// What this flight cannot test is skipped, with the reason: no temp column,
-// no temperature coefficients.
+// What this flight cannot test is skipped, with the reason: no temperature
+// in imu.csv, no temperature coefficients.
 TEST(Diagnose, CandidatesTheDataCannotTestAreSkippedWithTheReason) {
   TempDir dir;
   const std::string ds = dir.file("flight");
   ASSERT_EQ(run_sinu({"simulate", "flight", "--out", ds, "--seed", "9", "--duration", "600"}).exit_code, 0);
-  // Drop the temp column (the last) from imu.csv.
+  // Empty the temp field (the last) of every imu.csv row: "no measurement" (dataset contract).
   {
     std::ifstream in(ds + "/imu.csv");
     std::ofstream out(ds + "/imu_no_temp.csv");
     std::string line;
-    while (std::getline(in, line)) out << line.substr(0, line.rfind(',')) << "\n";
+    std::getline(in, line);
+    out << line << "\n";
+    while (std::getline(in, line)) out << line.substr(0, line.rfind(',') + 1) << "\n";
   }
   std::filesystem::rename(ds + "/imu_no_temp.csv", ds + "/imu.csv");
   const std::string out = dir.file("diag");
@@ -179,11 +182,11 @@ TEST(Diagnose, CandidatesTheDataCannotTestAreSkippedWithTheReason) {
   std::vector<std::string> skipped;
   for (const auto& s : d["skipped"]) {
     skipped.push_back(s["effect"]);
-    EXPECT_NE(s["reason"].get<std::string>().find("no temp column"), std::string::npos) << s.dump();
+    EXPECT_NE(s["reason"].get<std::string>().find("no temperature in imu.csv"), std::string::npos) << s.dump();
   }
   EXPECT_EQ(skipped, (std::vector<std::string>{"accel_temp_bias", "gyro_temp_bias"}));
   for (const auto& c : d["rounds"][0]["candidates"]) EXPECT_EQ(c["effect"].get<std::string>().find("temp"), std::string::npos);
-  EXPECT_NE(r.out.find("not tested: accel_temp_bias (no temp column"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("not tested: accel_temp_bias (no temperature in imu.csv"), std::string::npos) << r.out;
 }
 
 TEST(Diagnose, ABadModelFileIsAnErrorNamingTheFileAndTheKey) {

@@ -62,7 +62,7 @@ std::string untestable_reason(est::Effect effect, const replay::Excitation& x) {
   switch (effect) {
     case est::Effect::AccelTempBias:
     case est::Effect::GyroTempBias:
-      if (x.temp_samples == 0) return "no temp column: a temperature coefficient cannot be told from the bias";
+      if (x.temp_samples == 0) return "no temperature in imu.csv: a temperature coefficient cannot be told from the bias";
       if (x.temp_span_degC() < 2.0)
         return fmt::format("the temperature spans only {:.1f} degC (at least 2 degC separates a coefficient from the "
                            "bias; a warm-up on the bench does)", x.temp_span_degC());
