@@ -56,6 +56,17 @@ std::uint64_t innovation_count(const InnovationStats& s) {
   return n;
 }
 
+// Every flight phase with enough samples shows the source's misfit alike
+// (within 0.6-1.6x its flight average): a noise level, not an effect.
+bool alike_in_every_phase(const InnovationStats& st, std::size_t k) {
+  const double overall = st.source[k].nis();
+  for (const ComponentStats& p : st.by_phase[k]) {
+    if (p.count < 50) continue;
+    if (p.nis() < 0.6 * overall || p.nis() > 1.6 * overall) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::string untestable_reason(est::Effect effect, const replay::Excitation& x) {
@@ -109,6 +120,29 @@ void observability_notes(const CandidateResult& c, const replay::Excitation& x, 
   }
 }
 
+std::vector<std::string> noise_findings(const InnovationStats& st, bool effect_found) {
+  // What sets each source's sigma in the model, for the advice.
+  static constexpr const char* kSigmaFrom[kSources] = {"from the receiver's GST, or HDOP x UERE",
+                                                        "--gps-vel-sigma, learnt", "--mag-sigma, learnt"};
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < kSources; ++k) {
+    const ComponentStats& c = st.source[k];
+    if (c.count < 100) continue;
+    const double nis = c.nis(), factor = std::sqrt(nis);
+    if (nis > 1.3) {
+      out.push_back(fmt::format("{}: NIS {:.2f}: the innovations are {:.2f}x the sigma the filter claims: its noise ({}) "
+                                "is {:.2f}x too small{}",
+                                kSourceNames[k], nis, factor, kSigmaFrom[k], factor,
+                                effect_found ? " even with the effects found"
+                                             : " (no effect of the vocabulary explains the misfit)"));
+    } else if (nis < 0.7 && nis > 0.0) {
+      out.push_back(fmt::format("{}: NIS {:.2f}: its sigma ({}) is {:.2f}x too large (a generous sigma hides effects)",
+                                kSourceNames[k], nis, kSigmaFrom[k], 1.0 / factor));
+    }
+  }
+  return out;
+}
+
 bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error) {
   namespace fs = std::filesystem;
   out = {};
@@ -124,17 +158,22 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
   // The magnetometer's and the GNSS velocity's sigmas are guesses (GST reports
   // only the position's). A too-generous sigma hides effects: when a source's
   // NIS per component is below 0.5, scale its sigma by sqrt(NIS) (the factor
-  // for white noise) so it is 1. Never upwards: a NIS above 1 is what a
-  // missing effect looks like, and inflating the sigma would hide it.
-  const double mag_nis = current.stats.source[2].nis(), vel_nis = current.stats.source[1].nis();
-  const bool tune_mag = current.stats.source[2].count > 100 && mag_nis < 0.5;
-  const bool tune_vel = current.stats.source[1].count > 100 && vel_nis < 0.5;
-  if (o.tune_mag_sigma && (tune_mag || tune_vel)) {
-    if (tune_mag) tuned.replay.unit.mag_sigma_uT = out.mag_sigma_uT = std::max(0.05, o.replay.unit.mag_sigma_uT * std::sqrt(mag_nis));
-    if (tune_vel) {
-      tuned.replay.unit.sigma.velocity_sigma_m_s = out.vel_sigma_m_s =
-          std::max(0.01, o.replay.unit.sigma.velocity_sigma_m_s * std::sqrt(vel_nis));
-    }
+  // for white noise) so it is 1. Upwards only when the misfit is alike in every
+  // flight phase (a noise level set too small: a missing effect shows where
+  // the vehicle excites it, in turns, climbs or speed changes, and inflating
+  // the sigma would hide it).
+  auto sigma_factor = [&](std::size_t k) {
+    const ComponentStats& c = current.stats.source[k];
+    if (c.count <= 100) return 1.0;
+    const double nis = c.nis();
+    if (nis < 0.5 || (nis > 1.5 && alike_in_every_phase(current.stats, k))) return std::sqrt(nis);
+    return 1.0;
+  };
+  const double mag_factor = sigma_factor(2), vel_factor = sigma_factor(1);
+  if (o.tune_mag_sigma && (mag_factor != 1.0 || vel_factor != 1.0)) {
+    tuned.replay.unit.mag_sigma_uT = out.mag_sigma_uT = std::max(0.05, o.replay.unit.mag_sigma_uT * mag_factor);
+    tuned.replay.unit.sigma.velocity_sigma_m_s = out.vel_sigma_m_s =
+        std::max(0.01, o.replay.unit.sigma.velocity_sigma_m_s * vel_factor);
     if (!replay_and_score(tuned.replay, model, baseline_dir, current, error)) return false;
   }
   // Without a calibration the built-in sensor model is a generic guess, usually
@@ -221,6 +260,7 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
           if (effect == est::Effect::GpsLatency) prior = o.replay.unit.gps_latency_s;
           if (effect == est::Effect::LeverArm) prior = o.replay.unit.lever_arm_b_m(static_cast<Eigen::Index>(k));
           if (sg > 0.0) c.significance = std::max(c.significance, std::abs(v - prior) / sg);
+          c.plausibility = std::max(c.plausibility, std::abs(v) / est::spec(effect).plausible_max);
         }
       }
       c.stats = score.stats;
@@ -248,6 +288,7 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
     out.rounds.push_back(std::move(round));
     if (!out.rounds.back().found) break;
   }
+  out.noise_findings = noise_findings(current.stats, !out.missing.empty());
   // Candidates the last round could not pin down: say so, and what would.
   if (!out.rounds.empty()) {
     for (const CandidateResult& c : out.rounds.back().candidates) observability_notes(c, current.excitation, out.observability);

@@ -45,7 +45,17 @@ struct CandidateResult {
   std::vector<double> sigma_ratio;  // per component: posterior / prior sigma (near 1: the flight did not reveal it)
   InnovationStats stats;
   double rmse_pos_h_m = -1.0, rmse_att_deg = -1.0;  // against truth.csv (-1: none)
-  bool explains(double min_significance) const { return nll_gain > penalty && significance >= min_significance; }
+  double plausibility = 0.0; // max |estimate| / the vocabulary's plausible maximum: above 1 no real unit has it
+  bool plausible() const { return plausibility <= 1.0; }
+  /// The data want it (likelihood beyond the penalty, an estimate many sigmas
+  /// from the assumed value) and a real unit can have it.
+  bool explains(double min_significance) const {
+    return nll_gain > penalty && significance >= min_significance && plausible();
+  }
+  /// The data want it but only at a size no real unit has: the misfit is something else.
+  bool implausible_fit(double min_significance) const {
+    return nll_gain > penalty && significance >= min_significance && !plausible();
+  }
 };
 
 struct Round {
@@ -70,7 +80,13 @@ struct Diagnosis {
   std::vector<Skipped> skipped;           // candidates not tried
   std::vector<std::string> observability; // weakly observable components, and what would reveal them
   std::string model_file;                 // written by --apply ("" if not)
+  std::vector<std::string> noise_findings;  // a source whose noise level the final model gets wrong, and by how much
 };
+
+/// What the final model's NIS per source says of its noise levels: a source
+/// whose innovations are larger (NIS > 1.3) or smaller (< 0.7) than its sigmas
+/// claim, with the factor (sqrt NIS) and what sets that sigma.
+std::vector<std::string> noise_findings(const InnovationStats& final_stats, bool effect_found);
 
 /// Why this flight cannot test `effect` ("" if it can): no temperature, too
 /// little temperature change, no magnetometer.

@@ -63,14 +63,17 @@ std::string diagnosis_summary(const DiagnoseOptions& o, const Diagnosis& d) {
   std::string out = "diagnose " + o.replay.in_dir + "\n";
   if (d.rounds.empty()) return out;
   const Round& base = d.rounds.front();
-  if (d.mag_sigma_uT != d.mag_sigma_given_uT) {
-    out += "  magnetometer sigma tuned from " + fmt("%.2f", d.mag_sigma_given_uT) + " to " + fmt("%.2f", d.mag_sigma_uT) +
-           " uT (its NIS per component was " + fmt("%.2f", std::pow(d.mag_sigma_uT / d.mag_sigma_given_uT, 2)) + ")\n";
-  }
-  if (d.vel_sigma_m_s != d.vel_sigma_given_m_s) {
-    out += "  GNSS velocity sigma tuned from " + fmt("%.2f", d.vel_sigma_given_m_s) + " to " + fmt("%.3f", d.vel_sigma_m_s) +
-           " m/s (its NIS per component was " + fmt("%.2f", std::pow(d.vel_sigma_m_s / d.vel_sigma_given_m_s, 2)) + ")\n";
-  }
+  // A noise level is a diagnosis too: which sigma, how far off, and why it is noise.
+  auto tuned_line = [&](const char* what, double given, double used, const char* unit) {
+    const double f = used / given;
+    return std::string("  noise: ") + what + " sigma " + fmt("%.3g", given) + " " + unit + " was set " +
+           fmt("%.2f", f > 1.0 ? f : 1.0 / f) + "x too " + (f > 1.0 ? "small" : "large") + " (NIS per component " +
+           fmt("%.2f", f * f) + (f > 1.0 ? ", alike in every flight phase: a noise level, not a missing effect" : "") +
+           "); diagnosed with " + fmt("%.3g", used) + " " + unit + "\n";
+  };
+  if (d.mag_sigma_uT != d.mag_sigma_given_uT) out += tuned_line("magnetometer", d.mag_sigma_given_uT, d.mag_sigma_uT, "uT");
+  if (d.vel_sigma_m_s != d.vel_sigma_given_m_s)
+    out += tuned_line("GNSS velocity", d.vel_sigma_given_m_s, d.vel_sigma_m_s, "m/s");
   if (d.process_noise_scale != 1.0) {
     out += "  no calib.json: the built-in sensor model's coloured-error variances scaled by " +
            fmt("%.2g", d.process_noise_scale) + " (maximum likelihood of the innovations)\n";
@@ -79,10 +82,6 @@ std::string diagnosis_summary(const DiagnoseOptions& o, const Diagnosis& d) {
   if (d.missing.empty()) {
     out += "  no candidate effect explains the misfit (see report.md for each candidate's score)\n";
   }
-  for (const Diagnosis::Skipped& s : d.skipped)
-    out += "  not tested: " + std::string(est::spec(s.effect).name) + " (" + s.reason + ")\n";
-  if (!d.model_file.empty())
-    out += "  applied: " + d.model_file + " (start the next flight from it: --model-file, or navigation.model_file)\n";
   for (std::size_t r = 0; r < d.rounds.size(); ++r) {
     const Round& round = d.rounds[r];
     if (!round.found) continue;
@@ -91,6 +90,21 @@ std::string diagnosis_summary(const DiagnoseOptions& o, const Diagnosis& d) {
            estimate_text(c) + " (innovation log-likelihood +" + fmt("%.1f", c.nll_gain) + ", BIC penalty " +
            fmt("%.1f", c.penalty) + ")\n";
   }
+  est::EffectSet told;  // each implausible fit once (the first round it appeared in)
+  for (const Round& round : d.rounds) {
+    for (const CandidateResult& c : round.candidates) {
+      if (!c.implausible_fit(o.min_significance) || told.has(c.effect)) continue;
+      told.add(c.effect);
+      const est::EffectSpec& sp = est::spec(c.effect);
+      out += "  not named: " + std::string(sp.name) + " would fit (log-likelihood +" + fmt("%.1f", c.nll_gain) +
+             ") but only at " + fmt("%.3g", c.plausibility * sp.plausible_max * sp.display_scale) + " " + sp.unit +
+             ", beyond the " + fmt("%.3g", sp.plausible_max * sp.display_scale) + " " + sp.unit +
+             " a real unit has: the misfit is something else\n";
+    }
+  }
+  for (const std::string& n : d.noise_findings) out += "  noise: " + n + "\n";
+  for (const Diagnosis::Skipped& s : d.skipped)
+    out += "  not tested: " + std::string(est::spec(s.effect).name) + " (" + s.reason + ")\n";
   const Round& last = d.rounds.back();
   if (!d.missing.empty()) {
     out += "  error before -> after: horizontal RMSE " + rmse_text(base.rmse_pos_h_m, "m") + " -> " +
@@ -103,6 +117,8 @@ std::string diagnosis_summary(const DiagnoseOptions& o, const Diagnosis& d) {
     }
     out += "\n";
   }
+  if (!d.model_file.empty())
+    out += "  applied: " + d.model_file + " (start the next flight from it: --model-file, or navigation.model_file)\n";
   return out;
 }
 
@@ -149,13 +165,15 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
     nlohmann::json cands = nlohmann::json::array();
     for (const CandidateResult& c : round.candidates) {
       const auto e = static_cast<std::size_t>(c.effect);
-      md << "| " << est::kEffectNames[e] << (c.explains(o.min_significance) ? " **(explains)**" : "") << " | "
+      md << "| " << est::kEffectNames[e] << (c.explains(o.min_significance) ? " **(explains)**" : "")
+         << (c.implausible_fit(o.min_significance) ? " (fits, but implausibly large)" : "") << " | "
          << fmt("%.1f", c.nll_gain) << " | " << fmt("%.1f", c.penalty) << " | " << fmt("%.1f", c.significance)
          << " | " << estimate_text(c) << " | " << nis_cell(c.stats.source[0]) << " / " << nis_cell(c.stats.source[1])
          << " / " << nis_cell(c.stats.source[2]) << " | " << rmse_text(c.rmse_pos_h_m, "m") << " |\n";
       cands.push_back({{"effect", est::kEffectNames[e]}, {"nll_gain", c.nll_gain}, {"penalty", c.penalty},
                        {"significance", c.significance}, {"estimate", c.estimate}, {"sigma", c.sigma},
-                       {"explains", c.explains(o.min_significance)}, {"rmse_pos_h_m", c.rmse_pos_h_m}});
+                       {"explains", c.explains(o.min_significance)}, {"plausibility", c.plausibility},
+                       {"rmse_pos_h_m", c.rmse_pos_h_m}});
     }
     md << "\n";
     rounds.push_back({{"model", effect_list(round.model)}, {"found", round.found}, {"candidates", cands}});
@@ -180,6 +198,7 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
     md << "\n";
   }
   j["weakly_observable"] = d.observability;
+  j["noise_findings"] = d.noise_findings;
   md << "## Conclusion\n\n```\n" << diagnosis_summary(o, d) << "```\n";
   if (d.missing.empty()) {
     md << "\nNo effect the EKF can estimate explains the misfit. What the vocabulary does not cover: a\n"
