@@ -17,6 +17,7 @@ packages=(
   libtomlplusplus-dev      # toml++ 3.3: sinu fly's /etc/sinu/sinu.toml (firmware/board/config)
   clang libclang-rt-14-dev # libFuzzer targets, sanitizer runtimes
   python3 python3-numpy python3-matplotlib   # report plots (tools/*.py via /usr/bin/python3)
+  parallel                 # GNU parallel: tools/diagnose_fleet.sh
   gpsd-clients             # gpsdecode: gpsd's NMEA decoder checks the NMEA output (Debian 12 ships it here, not in gpsd-tools)
 )
 for arg in "$@"; do

@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <unistd.h>
+
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -256,6 +259,28 @@ TEST(Diagnose, OnTheRealQuadcopterOnlyPlausibleEffectsAreNamedAndTheErrorFalls) 
   EXPECT_NE(r.out.find("not named: gyro_misalign would fit"), std::string::npos) << r.out;
   // Measured 0.716 -> 0.635 m: a lower error, not a tolerance on the number.
   EXPECT_LT(d["after"]["rmse_pos_h_m"].get<double>(), d["before"]["rmse_pos_h_m"].get<double>());
+}
+
+// tools/diagnose_fleet.sh over a folder of two flights: a diagnosis each
+// (GNU parallel), and the fleet table naming the hidden lever arm in one unit.
+TEST(Diagnose, TheFleetScriptDiagnosesEveryFlightAndTablesTheEffects) {
+  if (::access("/usr/bin/parallel", X_OK) != 0) GTEST_SKIP() << "GNU parallel missing (tools/setup.sh installs it)";
+  TempDir dir;
+  const std::string logs = dir.file("logs"), out = dir.file("out");
+  std::filesystem::create_directories(logs);
+  const std::string lever = dir.write("lever.json", R"({"lever_arm": [0.9, -0.5, -0.6]})");
+  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", logs + "/unit_a", "--seed", "9", "--duration", "600", "--effects",
+                      lever}).exit_code, 0);
+  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", logs + "/unit_b", "--seed", "9", "--duration", "600"}).exit_code, 0);
+  ::setenv("SINU", SINU_EXE, 1);
+  const auto r = run_process({std::string(SINU_SOURCE_DIR) + "/tools/diagnose_fleet.sh", logs, out, "--gps-latency",
+                              "0.045", "--rounds", "1"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string table = read_file(out + "/fleet.md");
+  EXPECT_NE(table.find("# Fleet diagnosis: 2 flights"), std::string::npos) << table;
+  EXPECT_NE(table.find("| `lever_arm` | 1 | 50 % | unit_a: ["), std::string::npos) << table;
+  EXPECT_TRUE(std::filesystem::exists(out + "/unit_b/diagnosis.json"));
+  EXPECT_TRUE(std::filesystem::exists(out + "/unit_a/model.json"));
 }
 
 TEST(Diagnose, BadInputIsAnErrorNamingTheProblem) {
