@@ -33,7 +33,7 @@ void run_counting(est::NavigatorConfig cfg, const std::vector<est::ImuSample>& i
   run.nav->init(cfg, &run.obs, prefilter.get());
   AllocationScope scope;
   feed(*run.nav, imu, gnss);
-  run.allocations = scope.count();
+  run.allocations = static_cast<std::size_t>(scope.count());
 }
 
 TEST(NavigatorAlloc, LoopAllocatesNothingAfterInit) {

@@ -33,7 +33,7 @@ std::size_t write_sample_recording(const std::string& path) {
     }
   }
   EXPECT_TRUE(w.close());
-  return w.records();
+  return static_cast<std::size_t>(w.records());
 }
 
 std::vector<char> slurp(const std::string& path) {
