@@ -22,7 +22,7 @@ bool LinuxBoard::setup_gps(const FlyConfig::Gps& o, std::string& error) {
     na = gs::pmtk220_fix_interval(period_ms, a);
     nb = gs::pmtk251_baud(o.setup_baud, b);
   }
-  hal::SerialPort& port = serial_tap_ ? static_cast<hal::SerialPort&>(*serial_tap_) : serial_;
+  hal::SerialPort& port = devices().gps;  // recorded too, when recording
   // Rate first (understood at the old baud), then the baud change, then follow it.
   if (port.write({a.data(), na}).status != hal::SerialStatus::Ok ||
       (nb > 0 && port.write({b.data(), nb}).status != hal::SerialStatus::Ok)) {
@@ -43,19 +43,10 @@ bool LinuxBoard::open(const FlyConfig::Imu& imu, const FlyConfig::Gps& o, const 
   if (!serial_.open(o.device, o.baud)) return (error = serial_.last_error()), false;
   if (!drdy_.open(imu.drdy_chip, imu.drdy_line)) return (error = drdy_.last_error()), false;
   drdy_.also_wake_on(serial_.fd());
-  if (!record_path.empty()) {
-    if (!writer_.open(record_path)) return (error = writer_.error()), false;
-    recording_ = true;
-    i2c_tap_ = std::make_unique<hal::rec::RecordingI2cBus>(i2c_, writer_, clock_);
-    serial_tap_ = std::make_unique<hal::rec::RecordingSerialPort>(serial_, writer_, clock_);
-    drdy_tap_ = std::make_unique<hal::rec::RecordingGpioEdge>(drdy_, writer_);
-  }
+  if (!record_path.empty() && !recording_.start(record_path, {drdy_, i2c_, serial_, clock_}, error)) return false;
   return setup_gps(o, error);
 }
 
-board::BoardDevices LinuxBoard::devices() {
-  if (recording_) return {*drdy_tap_, *i2c_tap_, *serial_tap_, clock_};
-  return {drdy_, i2c_, serial_, clock_};
-}
+board::BoardDevices LinuxBoard::devices() { return recording_.devices({drdy_, i2c_, serial_, clock_}); }
 
 }  // namespace sinu::board

@@ -3,16 +3,15 @@
 // data-ready line through libgpiod, the GPS on a tty (configured first when
 // asked), with an optional raw recording of all traffic. The data-ready wait
 // also wakes on GPS bytes, so they are time-stamped as they arrive.
-#include <memory>
 #include <string>
 
 #include "firmware/board/board_loop.hpp"
 #include "firmware/board/config/fly_config.hpp"
+#include "firmware/board/recording_devices.hpp"
 #include "hal/linux/gpiod_edge.hpp"
 #include "hal/linux/i2c_dev.hpp"
 #include "hal/linux/monotonic_clock.hpp"
 #include "hal/linux/termios_serial.hpp"
-#include "hal/recording/recording_taps.hpp"
 
 namespace sinu::board {
 
@@ -21,7 +20,7 @@ class LinuxBoard {
   /// Opens everything; `record_path` empty: no recording. On false, `error` says why.
   bool open(const FlyConfig::Imu& imu, const FlyConfig::Gps& gps, const std::string& record_path, std::string& error);
   BoardDevices devices();
-  hal::rec::RecordingWriter* writer() { return recording_ ? &writer_ : nullptr; }
+  hal::rec::RecordingWriter* writer() { return recording_.writer(); }
   hal::MonotonicClock& clock() { return clock_; }
 
  private:
@@ -31,11 +30,7 @@ class LinuxBoard {
   hal::LinuxI2cBus i2c_;
   hal::TermiosSerialPort serial_;
   hal::GpiodEdge drdy_;
-  hal::rec::RecordingWriter writer_;
-  bool recording_ = false;
-  std::unique_ptr<hal::rec::RecordingI2cBus> i2c_tap_;
-  std::unique_ptr<hal::rec::RecordingSerialPort> serial_tap_;
-  std::unique_ptr<hal::rec::RecordingGpioEdge> drdy_tap_;
+  RecordingDevices recording_;
 };
 
 }  // namespace sinu::board

@@ -92,23 +92,10 @@ bool EmulatedBoard::open(const EmulateOptions& o, const drivers::Icm20948Config&
   clock_.advance_to_ns(data_->first_time_ns() - kStartUpNs);
   t0_ns_ = clock_.now_ns();
   wall0_ns_ = wall_.now_ns();
-  if (!record_path.empty()) {
-    if (!writer_.open(record_path)) {
-      error = writer_.error();
-      return false;
-    }
-    recording_ = true;
-    i2c_tap_ = std::make_unique<hal::rec::RecordingI2cBus>(*chip_, writer_, clock_);
-    serial_tap_ = std::make_unique<hal::rec::RecordingSerialPort>(serial_, writer_, clock_);
-    drdy_tap_ = std::make_unique<hal::rec::RecordingGpioEdge>(*this, writer_);
-  }
-  return true;
+  return record_path.empty() || recording_.start(record_path, {*this, *chip_, serial_, clock_}, error);
 }
 
-board::BoardDevices EmulatedBoard::devices() {
-  if (recording_) return {*drdy_tap_, *i2c_tap_, *serial_tap_, clock_};
-  return {*this, *chip_, serial_, clock_};
-}
+board::BoardDevices EmulatedBoard::devices() { return recording_.devices({*this, *chip_, serial_, clock_}); }
 
 std::string EmulatedBoard::error() const {
   return data_ && !data_->error().message.empty() ? data_->error().to_string() : std::string();

@@ -18,10 +18,10 @@
 
 #include "drivers/imu/emulated_icm20948.hpp"
 #include "firmware/board/board_loop.hpp"
+#include "firmware/board/recording_devices.hpp"
 #include "firmware/host/convert/dataset_devices.hpp"
 #include "hal/linux/monotonic_clock.hpp"
 #include "hal/linux/termios_serial.hpp"
-#include "hal/recording/recording_taps.hpp"
 #include "hal/replay/manual_clock.hpp"
 
 namespace sinu::emulate {
@@ -56,7 +56,7 @@ class EmulatedBoard final : public hal::GpioEdge {  // its own data-ready line
   bool open(const EmulateOptions& options, const drivers::Icm20948Config& imu, const std::string& record_path,
             std::string& error);
   board::BoardDevices devices();
-  hal::rec::RecordingWriter* writer() { return recording_ ? &writer_ : nullptr; }
+  hal::rec::RecordingWriter* writer() { return recording_.writer(); }
   /// The wall time the latest edge was raised (loop time is measured from it).
   const hal::TimeNs* edge_wall_ns() const { return &edge_wall_ns_; }
   hal::Clock& wall_clock() { return wall_; }
@@ -83,11 +83,7 @@ class EmulatedBoard final : public hal::GpioEdge {  // its own data-ready line
   bool bus_dead_ = false;
   std::uint32_t garbage_state_ = 0x2545F491u;
   EmulatorCounters counters_;
-  hal::rec::RecordingWriter writer_;
-  bool recording_ = false;
-  std::unique_ptr<hal::rec::RecordingI2cBus> i2c_tap_;
-  std::unique_ptr<hal::rec::RecordingSerialPort> serial_tap_;
-  std::unique_ptr<hal::rec::RecordingGpioEdge> drdy_tap_;
+  board::RecordingDevices recording_;
 };
 
 }  // namespace sinu::emulate
