@@ -236,17 +236,11 @@ void ErrorStateFilter::feedback(StateVec& dx, NavState& nav) {
   nav.v_n_m_s -= dx.segment(L.vel.start, 3);
   nav.q_nb = (quat_from_rotation_vector(dx.segment(L.att.start, 3)) * nav.q_nb).normalized();
   sensor_hat_ += dx.segment(L.sensor.start, L.sensor.size);
-  auto add3 = [&](Effect e, Eigen::Vector3d& v) {
-    if (L.has(e)) v += dx.segment(L.of(e).start, 3);
-  };
-  add3(Effect::AccelScale, accel_scale_);
-  add3(Effect::GyroScale, gyro_scale_);
-  add3(Effect::AccelTempBias, accel_temp_);
-  add3(Effect::GyroTempBias, gyro_temp_);
-  add3(Effect::LeverArm, lever_arm_b_);
-  add3(Effect::AccelBias, accel_bias_);
-  add3(Effect::GyroBias, gyro_bias_);
-  add3(Effect::GpsPositionBias, gps_bias_ned_);
+  for (std::size_t k = 0; k < kEffectCount; ++k) {
+    const auto e = static_cast<Effect>(k);
+    if (!L.has(e) || e == Effect::MagEarthField) continue;
+    for (Eigen::Index i = 0; i < L.of(e).size; ++i) effect_slot(*this, e, i) += dx(L.of(e).start + i);
+  }
   if (L.has(Effect::MagEarthField)) {
     // e = dF + [F x] phi: the field turns with the attitude correction (exactly,
     // as the attitude does), and so does its error, a navigation-frame vector
@@ -257,22 +251,6 @@ void ErrorStateFilter::feedback(StateVec& dx, NavState& nav) {
     mag_field_n_ = R * mag_field_n_ + dx.segment(L.of(Effect::MagEarthField).start, 3);
     rotate_block(L.of(Effect::MagEarthField), R);
   }
-
-  add3(Effect::MagHardIron, mag_hard_iron_b_);
-  auto add_off_diagonal = [&](Effect e, Eigen::Matrix3d& M) {
-    if (!L.has(e)) return;
-    for (Eigen::Index k = 0; k < 6; ++k) {
-      const auto [i, j] = kOffDiagonal[static_cast<std::size_t>(k)];
-      M(i, j) += dx(L.of(e).start + k);
-    }
-  };
-  add_off_diagonal(Effect::AccelMisalign, accel_misalign_);
-  add_off_diagonal(Effect::GyroMisalign, gyro_misalign_);
-  if (L.has(Effect::GyroGSensitivity)) {
-    for (Eigen::Index k = 0; k < 9; ++k) gyro_g_(k / 3, k % 3) += dx(L.of(Effect::GyroGSensitivity).start + k);
-  }
-  if (L.has(Effect::MagSoftIron)) mag_soft_iron_ += dx.segment(L.of(Effect::MagSoftIron).start, 6);
-  if (L.has(Effect::GpsLatency)) latency_s_ += dx(L.of(Effect::GpsLatency).start);
   dx.setZero();
 }
 
@@ -446,49 +424,9 @@ double ErrorStateFilter::sensor_error_sigma(Eigen::Index axis) const {
   return std::sqrt(P_(s, s));
 }
 
-double ErrorStateFilter::effect(Effect e, Eigen::Index i) const {
-  switch (e) {
-    case Effect::AccelScale: return accel_scale_(i);
-    case Effect::GyroScale: return gyro_scale_(i);
-    case Effect::LeverArm: return lever_arm_b_(i);
-    case Effect::GpsLatency: return latency_s_;
-    case Effect::AccelTempBias: return accel_temp_(i);
-    case Effect::GyroTempBias: return gyro_temp_(i);
-    case Effect::AccelBias: return accel_bias_(i);
-    case Effect::GyroBias: return gyro_bias_(i);
-    case Effect::GpsPositionBias: return gps_bias_ned_(i);
-    case Effect::MagEarthField: return mag_field_n_(i);
-    case Effect::MagHardIron: return mag_hard_iron_b_(i);
-    case Effect::MagSoftIron: return mag_soft_iron_(i);
-    case Effect::AccelMisalign:
-      return accel_misalign_(kOffDiagonal[static_cast<std::size_t>(i)][0], kOffDiagonal[static_cast<std::size_t>(i)][1]);
-    case Effect::GyroMisalign:
-      return gyro_misalign_(kOffDiagonal[static_cast<std::size_t>(i)][0], kOffDiagonal[static_cast<std::size_t>(i)][1]);
-    case Effect::GyroGSensitivity: return gyro_g_(i / 3, i % 3);
-  }
-  return 0.0;
-}
+double ErrorStateFilter::effect(Effect e, Eigen::Index i) const { return effect_slot(*this, e, i); }
 
-void ErrorStateFilter::set_effect(Effect e, Eigen::Index i, double v) {
-  const auto off = [i] { return kOffDiagonal[static_cast<std::size_t>(i)]; };
-  switch (e) {
-    case Effect::AccelScale: accel_scale_(i) = v; break;
-    case Effect::GyroScale: gyro_scale_(i) = v; break;
-    case Effect::LeverArm: lever_arm_b_(i) = v; break;
-    case Effect::GpsLatency: latency_s_ = v; break;
-    case Effect::AccelTempBias: accel_temp_(i) = v; break;
-    case Effect::GyroTempBias: gyro_temp_(i) = v; break;
-    case Effect::AccelBias: accel_bias_(i) = v; break;
-    case Effect::GyroBias: gyro_bias_(i) = v; break;
-    case Effect::GpsPositionBias: gps_bias_ned_(i) = v; break;
-    case Effect::MagEarthField: mag_field_n_(i) = v; break;
-    case Effect::MagHardIron: mag_hard_iron_b_(i) = v; break;
-    case Effect::MagSoftIron: mag_soft_iron_(i) = v; break;
-    case Effect::AccelMisalign: accel_misalign_(off()[0], off()[1]) = v; break;
-    case Effect::GyroMisalign: gyro_misalign_(off()[0], off()[1]) = v; break;
-    case Effect::GyroGSensitivity: gyro_g_(i / 3, i % 3) = v; break;
-  }
-}
+void ErrorStateFilter::set_effect(Effect e, Eigen::Index i, double v) { effect_slot(*this, e, i) = v; }
 
 void ErrorStateFilter::apply_priors() {
   for (std::size_t e = 0; e < kEffectCount; ++e) apply_prior(static_cast<Effect>(e));

@@ -133,6 +133,30 @@ class ErrorStateFilter {
 
  private:
   void apply_prior(Effect e);
+  /// The estimate of effect component i, for reading (const filter) or writing:
+  /// the one map from (effect, component) to the member that holds it.
+  template <typename Self>
+  static auto& effect_slot(Self& f, Effect e, Eigen::Index i) {
+    const auto& off = kOffDiagonal[static_cast<std::size_t>(i % 6)];
+    switch (e) {
+      case Effect::AccelScale: return f.accel_scale_(i);
+      case Effect::GyroScale: return f.gyro_scale_(i);
+      case Effect::LeverArm: return f.lever_arm_b_(i);
+      case Effect::GpsLatency: return f.latency_s_;
+      case Effect::AccelTempBias: return f.accel_temp_(i);
+      case Effect::GyroTempBias: return f.gyro_temp_(i);
+      case Effect::AccelBias: return f.accel_bias_(i);
+      case Effect::GyroBias: return f.gyro_bias_(i);
+      case Effect::GpsPositionBias: return f.gps_bias_ned_(i);
+      case Effect::MagEarthField: return f.mag_field_n_(i);
+      case Effect::MagHardIron: return f.mag_hard_iron_b_(i);
+      case Effect::MagSoftIron: return f.mag_soft_iron_(i);
+      case Effect::AccelMisalign: return f.accel_misalign_(off[0], off[1]);
+      case Effect::GyroMisalign: return f.gyro_misalign_(off[0], off[1]);
+      case Effect::GyroGSensitivity: break;
+    }
+    return f.gyro_g_(i / 3, i % 3);
+  }
   Eigen::Index hat_index(Eigen::Index axis) const { return axis * layout_.order; }
   /// P <- G P G^T for a 3-state block: a reset Jacobian.
   void rotate_block(const Slice& block, const Eigen::Matrix3d& G);
