@@ -30,6 +30,15 @@ RecoveryAction GnssRecovery::on_position(double t_s, bool accepted, double innov
   return RecoveryAction::ResetPosition;
 }
 
+void GnssRecovery::on_unusable(double t_s) {
+  last_pos_reject_s_ = t_s;
+  jump_ = false;
+  if (!pos_rejecting_) {
+    pos_rejecting_ = true;
+    pos_reject_since_s_ = t_s;
+  }
+}
+
 RecoveryAction GnssRecovery::on_velocity(double t_s, bool accepted, double speed_m_s) {
   if (accepted) {
     last_vel_accept_s_ = t_s;

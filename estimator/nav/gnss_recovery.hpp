@@ -46,6 +46,10 @@ class GnssRecovery {
   /// Outcome of the position update of an epoch valid at t: its horizontal
   /// innovation [m] and the fix's own horizontal sigma [m].
   RecoveryAction on_position(double t_s, bool accepted, double innovation_h_m, double fix_sigma_h_m);
+  /// An epoch was found at t (the filter time) that could not be fused at all (later than the
+  /// delayed horizon): for the loss detector, a rejection that says nothing
+  /// of who is wrong.
+  void on_unusable(double t_s);
   /// Outcome of the velocity update of an epoch valid at t; speed over ground.
   RecoveryAction on_velocity(double t_s, bool accepted, double speed_m_s);
   bool lost(double t_s) const;

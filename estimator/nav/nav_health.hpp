@@ -19,7 +19,7 @@ enum : std::uint32_t {
   kAligned = 1u << 0,        // a navigation solution exists
   kGnssTimeout = 1u << 1,    // no GNSS position for gnss_timeout_s: dead reckoning
   kMagTimeout = 1u << 2,     // magnetometer states on, no field sample for mag_timeout_s
-  kLost = 1u << 3,           // GNSS position and velocity both rejected for lost_after_s: the filter is wrong
+  kLost = 1u << 3,           // fixes arriving, none fused (rejected, or too late to use) for lost_after_s: the filter is wrong
   kGnssSuspect = 1u << 4,    // GNSS position rejected while its velocity agrees: a GNSS jump, held off
   kClipping = 1u << 5,       // an IMU axis is (or was within the filter's memory of it) at full scale
   // events

@@ -50,6 +50,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   mag_noise_.configure(cfg.mag_noise, cfg.mag_sigma_uT);
   mag_reject_since_s_ = -1.0;
   have_prev_ = have_raw_ = mag_started_ = in_timeout_ = false;
+  last_gap_t_s_ = -1e300;
   raw_period_s_ = period_s_ = horizontal_accel_m_s2_ = accel_diff_var_ = gyro_diff_var_ = 0.0;
   clip_until_t_s_.fill(kNever);
   last_clip_t_s_.fill(kNever);
@@ -153,27 +154,35 @@ void Navigator::process(const ImuSample& s) {
     return;
   }
 
+  const bool gap = dt > cfg_.gap_periods * period_s_;
+  if (gap) last_gap_t_s_ = s.t_s;
   const BodyRates r0 = filter_.compensate(prev_);
   const BodyRates r1 = filter_.compensate(s);
+  // Across a gap the last sample before it is held: a straight line to the
+  // first sample after it would spread that one sample's noise or transient
+  // over the whole gap (a real log: one -3.7 m/s^2 sample after a 2-s gap
+  // made 5 m/s of vertical velocity). The unknown motion is noise (widen_for_faults).
+  const BodyRates& r_end = gap ? r0 : r1;
   Eigen::Vector3d f_n;
   const Eigen::Vector3d v_before = nav_.v_n_m_s;
-  strapdown_step(nav_, r0, r1, dt, f_n);
+  strapdown_step(nav_, r0, r_end, dt, f_n);
   nav_.t_s = s.t_s;
   // The acceleration the GNSS velocity update needs (to take the state back to
   // its time of validity, and as the latency's Jacobian), smoothed over
   // ~0.2 s: one sample's velocity step carries the IMU's vibration, which the
   // same update's innovation also carries, and the correlated pair drags the
-  // latency estimate (a car on a rough road: -0.09 s for +0.05 s).
-  accel_n_ += std::min(1.0, dt / 0.2) * ((nav_.v_n_m_s - v_before) / dt - accel_n_);
+  // latency estimate (a car on a rough road: -0.09 s for +0.05 s). A gap's
+  // mean says nothing of the acceleration at its end.
+  if (!gap) accel_n_ += std::min(1.0, dt / 0.2) * ((nav_.v_n_m_s - v_before) / dt - accel_n_);
 
   PredictInput in;
   in.nav = &nav_;
-  in.specific_force_b_m_s2 = 0.5 * (r0.specific_force_b_m_s2 + r1.specific_force_b_m_s2);
-  in.angular_rate_b_rad_s = 0.5 * (r0.angular_rate_b_rad_s + r1.angular_rate_b_rad_s);
+  in.specific_force_b_m_s2 = 0.5 * (r0.specific_force_b_m_s2 + r_end.specific_force_b_m_s2);
+  in.angular_rate_b_rad_s = 0.5 * (r0.angular_rate_b_rad_s + r_end.angular_rate_b_rad_s);
   in.specific_force_n_m_s2 = f_n;
   in.temp_delta_degC = s.has_temp ? s.temp_degC - filter_.reference_temperature() : 0.0;
   in.dt_s = dt;
-  if (cfg_.vibration_noise && dt < cfg_.gap_periods * period_s_) {
+  if (cfg_.vibration_noise && !gap) {
     const double a = std::min(1.0, dt / cfg_.vibration_tau_s);
     accel_diff_var_ += a * ((s.specific_force_b_m_s2 - prev_.specific_force_b_m_s2).squaredNorm() / 3.0 - accel_diff_var_);
     gyro_diff_var_ += a * ((s.angular_rate_b_rad_s - prev_.angular_rate_b_rad_s).squaredNorm() / 3.0 - gyro_diff_var_);
@@ -190,6 +199,11 @@ void Navigator::process(const ImuSample& s) {
   if (horizontal_accel_m_s2_ < cfg_.yaw_observable_accel_m_s2 &&
       filter_.P()(yaw, yaw) > cfg_.yaw_freeze_sigma_rad * cfg_.yaw_freeze_sigma_rad) {
     frozen_.set(static_cast<std::size_t>(yaw));
+  }
+  // The latency is seen through the acceleration, which a gap leaves unknown.
+  const Slice latency = filter_.layout().of(Effect::GpsLatency);
+  if (latency.active() && s.t_s - last_gap_t_s_ < cfg_.latency_freeze_after_gap_s) {
+    frozen_.set(static_cast<std::size_t>(latency.start));
   }
 
   fuse_due_gnss(s.t_s, dt, r1);
@@ -278,6 +292,7 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
     // Later than one IMU interval (plus slack for jitter) means the horizon missed it.
     if (dt_back > 1.5 * dt + 1e-3) {
       ++counters_.gnss_late;
+      if (z.has_position) recovery_.on_unusable(t_now);
       continue;
     }
     if (z.has_position) {
@@ -427,6 +442,9 @@ bool Navigator::fuse(AidingSource src, const Measurement& m, double t_meas) {
     ++counters_.accepted[i];
     events_ |= kFused[i];
     filter_.feedback(dx_, nav_);
+    // An epoch can be fused only while the horizon still holds its time of
+    // validity: a latency estimate beyond it would make every later epoch late.
+    filter_.set_gps_latency(std::clamp(filter_.gps_latency_s(), 0.0, max_gps_latency_s()));
   } else {
     ++counters_.rejected[i];
     events_ |= kRejected[i];

@@ -15,6 +15,7 @@
 // axes widened, their biases frozen), gaps (propagated over the true interval
 // with the unknown motion's noise), GNSS rejected for too long (reset, see
 // gnss_recovery.hpp), sensor timeouts.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -97,6 +98,7 @@ struct NavigatorConfig {
   double gap_periods = 3.5;           // an interval longer than this many sample periods is a gap
   double gap_accel_sigma_m_s2 = 1.0;  // unknown acceleration and rate during a gap, on top of
   double gap_rate_sigma_rad_s = 0.02; // half the change across it
+  double latency_freeze_after_gap_s = 2.0;  // the GPS latency is not learnt this long after a gap
   // Heading observability: while the heading is uncertain (sigma above
   // yaw_freeze_sigma_rad) and the horizontal acceleration is below
   // yaw_observable_accel_m_s2 (at rest, steady flight), no update may move it:
@@ -159,6 +161,8 @@ class Navigator {
   void fuse_magnetometer(const ImuSample& s);
   void fuse_vehicle_constraints(const ImuSample& s, const BodyRates& now);
   bool fuse(AidingSource src, const Measurement& m, double t_meas);
+  /// The largest latency the delayed horizon can serve (two IMU periods of margin).
+  double max_gps_latency_s() const { return std::max(0.0, cfg_.horizon_s - 2.0 * period_s_ - 0.01); }
   void recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas);
   void update_health(double t_now, double dt);
   void emit();
@@ -189,6 +193,7 @@ class Navigator {
   std::array<double, kSensorAxes> last_clip_t_s_{};      // latest processed clipped sample, per axis
   std::array<int, kSensorAxes> clip_run_{};              // consecutive clipped intervals, per axis
   double period_s_ = 0.0;                                // nominal interval of the processed stream
+  double last_gap_t_s_ = -1e300;                         // end of the latest IMU gap
   double horizontal_accel_m_s2_ = 0.0;                   // smoothed (1 s) horizontal specific force, NED
   double accel_diff_var_ = 0.0, gyro_diff_var_ = 0.0;    // mean squared sample-to-sample differences
   StateMask frozen_;

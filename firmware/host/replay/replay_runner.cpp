@@ -70,7 +70,7 @@ class ReplayObserver final : public est::NavObserver {
     }
     if (lost && !was_lost_ && warnings_ < kMaxWarnings) {
       ++warnings_;
-      std::fprintf(stderr, "sinu replay: warning: t=%.3f s: solution LOST (GNSS position and velocity rejected)\n",
+      std::fprintf(stderr, "sinu replay: warning: t=%.3f s: solution LOST (GNSS fixes arriving, none fused)\n",
                    o.nav.t_s);
     }
     was_lost_ = lost;
