@@ -22,6 +22,7 @@ enum : std::uint32_t {
   kLost = 1u << 3,           // fixes arriving, none fused (rejected, or too late to use) for lost_after_s: the filter is wrong
   kGnssSuspect = 1u << 4,    // GNSS position rejected while its velocity agrees: a GNSS jump, held off
   kClipping = 1u << 5,       // an IMU axis is (or was within the filter's memory of it) at full scale
+  kGroundVehicle = 1u << 6,  // the ground-vehicle constraints are in use (configured or detected)
   // events
   kGnssPosFused = 1u << 8,
   kGnssPosRejected = 1u << 9,
@@ -37,15 +38,16 @@ enum : std::uint32_t {
   kAlignedNow = 1u << 19,     // the alignment completed at this output
   kStill = 1u << 20,          // state: standing still (IMU quiet, GNSS speed ~0): zero-velocity updates
   kNonholonomicFused = 1u << 21,
+  kVehicleChanged = 1u << 22,  // vehicle auto: the ground-vehicle constraints were switched on or off
 };
 }  // namespace nav_flag
 
 /// The flags' names, bit by bit (nav.csv documents its `flags` column with them).
-inline constexpr std::array<const char*, 22> kNavFlagNames = {
-    "aligned", "gnss_timeout", "mag_timeout", "lost", "gnss_suspect", "clipping", "", "",
+inline constexpr std::array<const char*, 23> kNavFlagNames = {
+    "aligned", "gnss_timeout", "mag_timeout", "lost", "gnss_suspect", "clipping", "ground_vehicle", "",
     "gnss_pos_fused", "gnss_pos_rejected", "gnss_vel_fused", "gnss_vel_rejected", "mag_fused", "mag_rejected",
     "position_reset", "velocity_reset", "yaw_reset", "imu_gap", "imu_dropped", "aligned_now", "still",
-    "nonholonomic_fused"};
+    "nonholonomic_fused", "vehicle_changed"};
 
 struct NavCounters {
   std::array<std::uint64_t, kAidingSourceCount> accepted{}, rejected{};

@@ -44,6 +44,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   recovery_.configure(cfg.recovery);
   vel_noise_started_ = false;
   stillness_.configure(cfg.stillness);
+  vehicle_.configure(cfg.vehicle_detector);
   still_now_ = false;
   last_gnss_speed_m_s_ = 1e9;
   last_zupt_t_s_ = last_nhc_t_s_ = 0.0;
@@ -212,6 +213,11 @@ void Navigator::process(const ImuSample& s) {
   compensated.specific_force_b_m_s2 = r1.specific_force_b_m_s2;
   compensated.angular_rate_b_rad_s = r1.angular_rate_b_rad_s;
   stillness_.add(compensated, dt);
+  if (cfg_.vehicle == VehicleKind::Auto) {
+    const bool was_ground = ground_vehicle();
+    vehicle_.add(nav_, dt, s.t_s - last_gnss_pos_t_s_ < 1.0);
+    if (ground_vehicle() != was_ground) events_ |= nav_flag::kVehicleChanged;
+  }
   fuse_vehicle_constraints(s, r1);
   update_health(s.t_s, dt);
   prev_ = s;
@@ -411,18 +417,24 @@ void Navigator::fuse_vehicle_constraints(const ImuSample& s, const BodyRates& no
   const bool gnss_recent = s.t_s - last_gnss_pos_t_s_ < cfg_.gnss_timeout_s;
   const bool still = stillness_.still() && (!gnss_recent || last_gnss_speed_m_s_ < cfg_.still_max_gnss_speed_m_s);
   still_now_ = still;
-  const bool zupt = cfg_.vehicle == VehicleKind::Ground || cfg_.zero_velocity_in_air;
+  const bool zupt = ground_vehicle() || cfg_.zero_velocity_in_air;
   if (zupt && still && s.t_s - last_zupt_t_s_ >= cfg_.zero_velocity_period_s - 1e-6) {
     last_zupt_t_s_ = s.t_s;
     fuse(AidingSource::ZeroVelocity,
          zero_velocity_measurement(filter_, nav_, cfg_.zero_velocity_sigma_m_s, cfg_.gate_sigma), s.t_s);
   }
-  if (cfg_.vehicle != VehicleKind::Ground || still) return;
+  if (!ground_vehicle() || still) return;
   if (nav_.v_n_m_s.head<2>().norm() < cfg_.nonholonomic_min_speed_m_s) return;
   if (s.t_s - last_nhc_t_s_ < cfg_.nonholonomic_period_s - 1e-6) return;
   last_nhc_t_s_ = s.t_s;
-  fuse(AidingSource::Nonholonomic,
-       nonholonomic_measurement(filter_, nav_, now.angular_rate_b_rad_s, cfg_.nonholonomic, cfg_.gate_sigma), s.t_s);
+  const bool ok = fuse(AidingSource::Nonholonomic,
+                       nonholonomic_measurement(filter_, nav_, now.angular_rate_b_rad_s, cfg_.nonholonomic,
+                                                cfg_.gate_sigma),
+                       s.t_s);
+  if (cfg_.vehicle == VehicleKind::Auto) {
+    vehicle_.on_constraint(s.t_s, ok);
+    if (!ground_vehicle()) events_ |= nav_flag::kVehicleChanged;
+  }
 }
 
 bool Navigator::fuse(AidingSource src, const Measurement& m, double t_meas) {
@@ -472,6 +484,7 @@ void Navigator::update_health(double t_now, double dt) {
   }
   if (recovery_.gnss_suspect(t_now)) f |= nav_flag::kGnssSuspect;
   if (still_now_) f |= nav_flag::kStill;
+  if (ground_vehicle()) f |= nav_flag::kGroundVehicle;
   state_flags_ = f;
 }
 

@@ -30,6 +30,7 @@
 #include "estimator/nav/nav_health.hpp"
 #include "estimator/nav/noise_adapter.hpp"
 #include "estimator/nav/stillness.hpp"
+#include "estimator/nav/vehicle_detector.hpp"
 #include "estimator/prefilter/imu_prefilter.hpp"
 #include "estimator/util/ring_buffer.hpp"
 
@@ -39,8 +40,9 @@ inline constexpr std::size_t kImuBufferCapacity = 512;   // 0.5 s at 1000 Hz
 inline constexpr std::size_t kGnssBufferCapacity = 32;   // 6 s of 5 Hz epochs
 
 /// What the unit is mounted in: a ground vehicle adds the non-holonomic
-/// constraint (no sideways, no vertical velocity in the body frame).
-enum class VehicleKind : std::uint8_t { Air, Ground };
+/// constraint (no sideways, no vertical velocity in the body frame) and
+/// zero-velocity updates at stops; Auto finds out (vehicle_detector.hpp).
+enum class VehicleKind : std::uint8_t { Air, Ground, Auto };
 
 struct NavigatorConfig {
   SensorNoise noise = SensorNoise::defaults(NoiseModelKind::GaussMarkov);
@@ -56,6 +58,7 @@ struct NavigatorConfig {
   Eigen::Vector3d lever_arm_b_m = Eigen::Vector3d::Zero();  // antenna minus IMU, body FRD
   bool fuse_velocity = true;
   VehicleKind vehicle = VehicleKind::Air;
+  VehicleDetectorConfig vehicle_detector;  // with VehicleKind::Auto
   NonholonomicConfig nonholonomic;
   double nonholonomic_period_s = 0.1;
   double nonholonomic_min_speed_m_s = 1.0;
@@ -147,6 +150,12 @@ class Navigator {
   const NavState& nav() const { return nav_; }
   const ErrorStateFilter& filter() const { return filter_; }
   const NavCounters& counters() const { return counters_; }
+  /// Whether the ground-vehicle constraints are in use now (configured, or detected).
+  bool ground_vehicle() const {
+    return cfg_.vehicle == VehicleKind::Ground ||
+           (cfg_.vehicle == VehicleKind::Auto && vehicle_.guess() == VehicleGuess::Ground);
+  }
+  const VehicleDetector& vehicle_detector() const { return vehicle_; }
   const NavigatorConfig& config() const { return cfg_; }
   /// The noise sigmas in use now (learnt, or as configured).
   double gnss_velocity_sigma_m_s() const { return vel_noise_.sigma(); }
@@ -199,6 +208,7 @@ class Navigator {
   StateMask frozen_;
   NoiseAdapter vel_noise_, mag_noise_;
   Stillness stillness_;
+  VehicleDetector vehicle_;
   double last_gnss_speed_m_s_ = 1e9, last_zupt_t_s_ = 0.0, last_nhc_t_s_ = 0.0;
   bool still_now_ = false;
   bool vel_noise_started_ = false;

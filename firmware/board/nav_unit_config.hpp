@@ -34,7 +34,7 @@ struct NavUnitConfig {
   bool adapt_velocity_noise = true;
   bool adapt_mag_noise = true;
   bool use_mag = true;
-  est::VehicleKind vehicle = est::VehicleKind::Air;  // ground: non-holonomic constraint
+  est::VehicleKind vehicle = est::VehicleKind::Auto;  // ground: non-holonomic constraint; auto: detected
   // IMU full scales for the clipping screen; 0: unknown (on the board and for
   // a recording the driver's settings give them).
   double accel_range_m_s2 = 0.0;

@@ -1,5 +1,7 @@
 #include "firmware/cli/navigation_options.hpp"
 
+#include "firmware/board/config/vehicle_words.hpp"
+
 namespace sinu::cli {
 
 void NavigationCliOptions::add_to(CLI::App& sub) {
@@ -44,8 +46,9 @@ void NavigationCliOptions::add_to(CLI::App& sub) {
                  "Site's magnetic declination [deg, east +]: align heading with the magnetometer at rest "
                  "(default: from the GNSS course once moving)");
   sub.add_option("--vehicle", vehicle,
-                 "What carries the unit: air (UAV, default) or ground (a car: no sideways or vertical velocity in "
-                 "the body frame, the non-holonomic constraint)")
+                 "What carries the unit: auto (default: an aircraft until the solution's body-frame velocity shows "
+                 "a ground vehicle: no sideways or vertical velocity), air (UAV), or ground (a car: the "
+                 "non-holonomic constraint and zero-velocity updates at stops from the start)")
       ->capture_default_str();
   sub.add_flag("--no-mag", [this](std::int64_t) { opt.unit.use_mag = false; },
                "Do not fuse the magnetometer even when imu.csv has one");
@@ -62,12 +65,8 @@ bool NavigationCliOptions::resolve(std::string& error) {
     return false;
   }
   if (!board::resolve_effects(effects, without_effects, opt.unit.effects, error)) return false;
-  if (vehicle == "air") {
-    opt.unit.vehicle = est::VehicleKind::Air;
-  } else if (vehicle == "ground") {
-    opt.unit.vehicle = est::VehicleKind::Ground;
-  } else {
-    error = "--vehicle must be air or ground, not '" + vehicle + "'";
+  if (!board::vehicle_from_word(vehicle, opt.unit.vehicle)) {
+    error = "--vehicle must be air, ground or auto, not '" + vehicle + "'";
     return false;
   }
   // A dataset's full scales only when given (a recording's come from its driver settings).

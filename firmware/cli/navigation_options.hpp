@@ -17,7 +17,7 @@ struct NavigationCliOptions {
   std::string model;
   std::string effects;          // added to the defaults
   std::string without_effects;  // removed from them
-  std::string vehicle = "air";
+  std::string vehicle = "auto";
   std::vector<double> lever_arm;
   BoardOptions imu;  // for a raw recording: the driver settings it was recorded with
   CLI::App* app = nullptr;

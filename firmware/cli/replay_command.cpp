@@ -57,6 +57,14 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
       break;
     case replay::HealthStatus::Ok: break;
   }
+  const replay::VehicleOutcome& v = r.vehicle;
+  if (v.configured == est::VehicleKind::Auto && v.guess != est::VehicleGuess::Undecided) {
+    std::printf("  vehicle: moves like a ground vehicle from t=%.1f s (body-frame velocity while moving: lateral %.2f, "
+                "vertical %.2f m/s RMS): non-holonomic constraint %s\n",
+                v.detected_at_s, v.lateral_rms_m_s, v.vertical_rms_m_s,
+                v.guess == est::VehicleGuess::Ground ? "on (--vehicle air keeps it off)"
+                                                     : "on, then off again: the constraint did not hold");
+  }
   std::printf("  rmse: pos_h %s m  pos_v %s m  vel %s m/s  att %s deg  (%s truth points; GNSS alone: pos_h %s m  pos_v %s m)\n",
               num(r.rmse_pos_h_m()).c_str(), num(r.rmse_pos_v_m()).c_str(), num(r.rmse_vel_m_s()).c_str(),
               num(r.rmse_att_deg()).c_str(), num(m.compared).c_str(), num(r.gnss_rmse_pos_h_m()).c_str(),

@@ -191,7 +191,7 @@ TEST(FlyConfig, EveryErrorInTheOrderOfTheFile) {
   EXPECT_EQ(l.error, l.path + ":2: imu.dlpf: must be 0..7, not 9\n" + l.path +
                          ":4: gps.rate_hz: must be 0.1..25, not 0\n" + l.path +
                          ":5: gps.bogus: unknown key ([gps] has device, baud, setup, rate_hz, setup_baud)\n" + l.path +
-                         ":7: navigation.vehicle: must be one of air, ground, not \"boat\"");
+                         ":7: navigation.vehicle: must be one of air, ground, auto, not \"boat\"");
 }
 
 TEST(FlyConfig, UnreadableFile) {

@@ -12,6 +12,7 @@
 #include "drivers/imu/axis_map.hpp"
 #include "estimator/ekf/state_layout.hpp"
 #include "firmware/board/config/toml_reader.hpp"
+#include "firmware/board/config/vehicle_words.hpp"
 #include "firmware/board/outputs/nmea_sentences.hpp"
 
 namespace sinu::board {
@@ -25,7 +26,6 @@ constexpr std::array<std::int64_t, 4> kAccelRanges = {2, 4, 8, 16};
 constexpr std::array<std::int64_t, 4> kGyroRanges = {250, 500, 1000, 2000};
 constexpr std::array<std::string_view, 4> kGpsSetups = {"none", "ubx", "ubx-valset", "mtk"};
 constexpr std::array<std::string_view, 2> kModels = {"gm", "ar"};
-constexpr std::array<std::string_view, 2> kVehicles = {"air", "ground"};
 constexpr std::array<std::string_view, 2> kTransports = {"udp", "serial"};
 constexpr std::array<std::string_view, 2> kTalkers = {"GP", "GN"};
 
@@ -82,7 +82,7 @@ void read_sections(TomlReader& r, FlyConfig& c) {
   nav.choice("model", c.navigation.model, kModels);
   nav.text_list("effects", c.navigation.effects, effect_check);
   nav.text_list("without_effects", c.navigation.without_effects, without_effect_check);
-  nav.choice("vehicle", c.navigation.vehicle, kVehicles);
+  nav.choice("vehicle", c.navigation.vehicle, kVehicleWords);
   nav.flag("magnetometer", c.navigation.magnetometer);
   nav.optional_number("mag_declination_deg", c.navigation.mag_declination_deg, -180.0, 180.0);
   nav.number("gps_latency_s", c.navigation.gps_latency_s, 0.0, 1.0);

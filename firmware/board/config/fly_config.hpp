@@ -45,7 +45,7 @@ struct FlyConfig {
     std::string model = "ar";               // gm, ar
     std::vector<std::string> effects;        // effect states added to the defaults
     std::vector<std::string> without_effects;  // defaults removed ("none": all of them)
-    std::string vehicle = "air";            // air, ground
+    std::string vehicle = "auto";           // auto, air, ground (vehicle_words.hpp)
     bool magnetometer = true;
     std::optional<double> mag_declination_deg;  // east +; unset: heading from the course
     double gps_latency_s = 0.05;

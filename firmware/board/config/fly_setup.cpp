@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numbers>
 
+#include "firmware/board/config/vehicle_words.hpp"
 #include "firmware/board/nav_unit.hpp"
 
 namespace sinu::board {
@@ -44,9 +45,8 @@ bool nav_unit_config(const FlyConfig& c, NavUnitConfig& out, std::string& error)
   else if (n.model == "ar") out.calib.kind = est::NoiseModelKind::AutoRegressive;
   else return (error = "navigation.model must be gm or ar, not '" + n.model + "'"), false;
   if (!resolve_effects(join(n.effects), join(n.without_effects), out.effects, error)) return false;
-  if (n.vehicle == "air") out.vehicle = est::VehicleKind::Air;
-  else if (n.vehicle == "ground") out.vehicle = est::VehicleKind::Ground;
-  else return (error = "navigation.vehicle must be air or ground, not '" + n.vehicle + "'"), false;
+  if (!vehicle_from_word(n.vehicle, out.vehicle))
+    return (error = "navigation.vehicle must be air, ground or auto, not '" + n.vehicle + "'"), false;
   out.use_mag = n.magnetometer;
   if (n.mag_declination_deg) out.mag_declination_deg = *n.mag_declination_deg;
   out.gps_latency_s = n.gps_latency_s;

@@ -1,5 +1,7 @@
 #include "firmware/host/replay/replay_files.hpp"
 
+#include "firmware/board/config/vehicle_words.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -73,6 +75,16 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
   sj["calib"] = opt.unit.calib_path.empty() ? json(nullptr) : json(opt.unit.calib_path);
   sj["states"] = r.states;
   sj["denoiser"] = r.denoiser;
+  const VehicleOutcome& v = r.vehicle;
+  json detected = nullptr;
+  if (v.guess == est::VehicleGuess::Ground) detected = "ground";
+  if (v.guess == est::VehicleGuess::Reverted) detected = "ground, reverted to air";
+  sj["vehicle"] = {{"configured", board::vehicle_word(v.configured)},
+                   {"constraints_at_end", v.ground_at_end ? "ground" : "none"},
+                   {"detected", detected},
+                   {"detected_at_s", v.guess != est::VehicleGuess::Undecided ? json(v.detected_at_s) : json(nullptr)},
+                   {"evidence", {{"moving_s", v.moving_s}, {"body_lateral_rms_m_s", v.lateral_rms_m_s},
+                                 {"body_vertical_rms_m_s", v.vertical_rms_m_s}}}};
   json eff = json::array();
   for (const EffectEstimate& e : r.effects) {
     eff.push_back({{"name", est::kEffectNames[static_cast<std::size_t>(e.effect)]}, {"estimate", e.estimate}, {"sigma", e.sigma}});

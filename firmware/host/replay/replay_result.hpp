@@ -36,6 +36,15 @@ struct GnssFeedCounters {
   std::uint64_t epochs = 0, used = 0, dropped_outage = 0, dropped_period = 0;
 };
 
+/// What carried the unit: as configured, and with `auto` what the detector found.
+struct VehicleOutcome {
+  est::VehicleKind configured = est::VehicleKind::Auto;
+  bool ground_at_end = false;       // the ground-vehicle constraints in use at the end
+  est::VehicleGuess guess = est::VehicleGuess::Undecided;
+  double detected_at_s = 0.0;       // valid when guess != Undecided
+  double lateral_rms_m_s = 0.0, vertical_rms_m_s = 0.0, moving_s = 0.0;  // the detector's evidence
+};
+
 enum class HealthStatus { Ok, Reset, LostAndRecovered, Lost, NotAligned };
 const char* health_status_name(HealthStatus s);  // ok, reset, lost_and_recovered, lost, not_aligned
 
@@ -55,6 +64,7 @@ struct ReplayResult {
   NavMetrics metrics;             // against truth.csv; NIS per source
   est::NavCounters counters;
   GnssFeedCounters gnss;
+  VehicleOutcome vehicle;
   SourceCounters source;
   double gnss_velocity_sigma_m_s = 0.0, mag_sigma_uT = 0.0;  // in use at the end (learnt or fixed)
   std::string note;               // what the user must know ("" if nothing): truncated recording, dropped rows
