@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "estimator/earth/geomagnetic_model.hpp"
 #include "estimator/earth/wgs84.hpp"
 #include "estimator/ins/rotation.hpp"
 
@@ -52,25 +53,48 @@ bool CoarseAlignment::add_gnss(const GnssObservation& z, double t_now, Alignment
   // whose horizontal angle is declination - yaw.
   if (cfg_.use_mag && r.has_mag) {
     const Eigen::Vector3d m_level = r.q_level * r.mean_mag_b_uT;
-    const double declination = cfg_.declination_known ? cfg_.mag_declination_rad : 0.0;
-    const double heading = declination - std::atan2(m_level.y(), m_level.x());
-    finish(z, t_now, heading,
-           cfg_.declination_known ? cfg_.mag_heading_sigma_rad : cfg_.mag_unknown_declination_sigma_rad, out);
+    double sigma = 0.0;
+    const double heading = declination_for(m_level, z, sigma, out) - std::atan2(m_level.y(), m_level.x());
+    finish(z, t_now, heading, sigma, out);
     return true;
   }
   if (!z.has_velocity || z.v_ne_m_s.norm() < cfg_.min_course_speed_m_s) return false;
   const double turn = std::atan2(z.v_ne_m_s.y(), z.v_ne_m_s.x()) - euler_from_quat(q_now_).z();
+  out.heading_source = HeadingSource::GnssCourse;
   finish(z, t_now, turn, cfg_.course_heading_sigma_rad, out);
   return true;
 }
 
-double CoarseAlignment::mag_heading(const Eigen::Quaterniond& q_nb, const Eigen::Vector3d& mag_b_uT) const {
+double CoarseAlignment::declination_for(const Eigen::Vector3d& m_level, const GnssObservation& z, double& sigma,
+                                        AlignmentResult& out) const {
+  if (cfg_.declination_known) {
+    out.heading_source = HeadingSource::MagnetometerGivenDeclination;
+    sigma = cfg_.mag_heading_sigma_rad;
+    return out.declination_rad = cfg_.mag_declination_rad;
+  }
+  out.heading_source = HeadingSource::MagnetometerNoDeclination;
+  sigma = cfg_.mag_unknown_declination_sigma_rad;
+  if (!cfg_.use_geomagnetic_model || !std::isfinite(z.decimal_year)) return 0.0;
+  const geomag::GeomagneticField f = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, z.decimal_year);
+  const double dip = std::atan2(m_level.z(), m_level.head<2>().norm());
+  out.field_ratio = m_level.norm() / f.total_uT;
+  out.dip_difference_rad = dip - f.inclination_rad;
+  if (std::abs(out.field_ratio - 1.0) > cfg_.geomag_max_field_ratio ||
+      std::abs(out.dip_difference_rad) > cfg_.geomag_max_dip_rad) {
+    return 0.0;  // not the Earth's field as the model knows it: no declination from it
+  }
+  out.heading_source = HeadingSource::MagnetometerModelDeclination;
+  sigma = cfg_.mag_heading_sigma_rad;
+  return out.declination_rad = f.declination_rad;
+}
+
+double CoarseAlignment::mag_heading(const Eigen::Quaterniond& q_nb, const Eigen::Vector3d& mag_b_uT,
+                                    const GnssObservation& z, double& sigma, AlignmentResult& out) const {
   // The field in the levelled (yaw 0) frame is Rz(-yaw) F_n, whose horizontal angle is declination - yaw.
   const double yaw = euler_from_quat(q_nb).z();
   const Eigen::Quaterniond q_level = Eigen::Quaterniond(Eigen::AngleAxisd(-yaw, Eigen::Vector3d::UnitZ())) * q_nb;
   const Eigen::Vector3d m_level = q_level * mag_b_uT;
-  const double declination = cfg_.declination_known ? cfg_.mag_declination_rad : 0.0;
-  return declination - std::atan2(m_level.y(), m_level.x());
+  return declination_for(m_level, z, sigma, out) - std::atan2(m_level.y(), m_level.x());
 }
 
 bool CoarseAlignment::align_in_motion(const GnssObservation& z, double t_now, AlignmentResult& out) {
@@ -81,16 +105,19 @@ bool CoarseAlignment::align_in_motion(const GnssObservation& z, double t_now, Al
   if (tilt_since_s_ < 0.0) tilt_since_s_ = t_now;
   const double yaw_now = euler_from_quat(s.q_nb).z();
   if (s.yaw_observable) {
+    out.heading_source = HeadingSource::InMotion;
     finish_in_motion(z, t_now, s, yaw_now, s.att_sigma_rad.z(), out);
     return true;
   }
   if (cfg_.use_mag && have_mag_) {
-    finish_in_motion(z, t_now, s, mag_heading(s.q_nb, last_mag_b_uT_),
-                     cfg_.declination_known ? cfg_.mag_heading_sigma_rad : cfg_.mag_unknown_declination_sigma_rad, out);
+    double sigma = 0.0;
+    const double heading = mag_heading(s.q_nb, last_mag_b_uT_, z, sigma, out);
+    finish_in_motion(z, t_now, s, heading, sigma, out);
     return true;
   }
   if (t_now - tilt_since_s_ >= cfg_.course_wait_s && z.has_velocity &&
       z.v_ne_m_s.norm() >= cfg_.min_course_speed_m_s) {
+    out.heading_source = HeadingSource::GnssCourse;
     finish_in_motion(z, t_now, s, std::atan2(z.v_ne_m_s.y(), z.v_ne_m_s.x()), cfg_.course_heading_sigma_rad, out);
     return true;
   }

@@ -7,8 +7,13 @@
 //     gravity and GNSS velocity over a few seconds).
 //   Heading, in order of preference:
 //     - at rest, the magnetometer, as soon as there is a fix: with the site's
-//       declination (sigma a few deg), or without it (sigma covers any
-//       declination; the Earth-field states and GNSS motion refine it);
+//       declination (sigma a few deg), given, or else from the World Magnetic
+//       Model at the fix's position and date when the field the sensor
+//       measures is the Earth's (its strength and dip within
+//       geomag_max_field_ratio / geomag_max_dip_rad of the model's: a field
+//       bent by uncalibrated hard iron or made up by a simulator is not),
+//       or without it (sigma covers any declination; the Earth-field states
+//       and GNSS motion refine it);
 //     - in motion, the in-motion alignment's own heading once the velocity
 //       has changed enough to show it; else the magnetometer; else, after
 //       course_wait_s of tilt without either, the GNSS course;
@@ -16,6 +21,9 @@
 //       passes min_course_speed_m_s (sigma covers crab and sideslip).
 // Status: WaitingForRest (no tilt yet), Levelled (tilt known, waiting for a
 // heading), Aligned.
+#include <cmath>
+#include <cstdint>
+
 #include "estimator/align/in_motion_alignment.hpp"
 #include "estimator/align/rest_levelling.hpp"
 #include "estimator/ekf/aiding/gnss_observation.hpp"
@@ -37,7 +45,30 @@ struct AlignmentConfig {
   double mag_declination_rad = 0.0;        // east of true north positive (used when known)
   double mag_heading_sigma_rad = 0.05;     // with the declination: its model error, residual hard iron
   double mag_unknown_declination_sigma_rad = 0.35;  // without it: |declination| < 20 deg at most sites
+  // The World Magnetic Model's declination when none is given and the fix has a date.
+  bool use_geomagnetic_model = true;
+  double geomag_max_field_ratio = 0.15;    // | |m| / F_model - 1 |: residual hard iron, local anomaly
+  double geomag_max_dip_rad = 0.087;       // 5 deg between the measured and the model's inclination
 };
+
+/// Where the first heading came from (AlignmentResult, the replay's summary).
+enum class HeadingSource : std::uint8_t {
+  MagnetometerGivenDeclination,  // the magnetometer with the configured declination
+  MagnetometerModelDeclination,  // the magnetometer with the World Magnetic Model's declination
+  MagnetometerNoDeclination,     // the magnetometer, declination unknown (wide sigma)
+  InMotion,                      // the in-motion alignment's velocity-change fit
+  GnssCourse,                    // the GNSS course
+};
+inline constexpr const char* heading_source_name(HeadingSource s) {
+  switch (s) {
+    case HeadingSource::MagnetometerGivenDeclination: return "magnetometer, given declination";
+    case HeadingSource::MagnetometerModelDeclination: return "magnetometer, World Magnetic Model declination";
+    case HeadingSource::MagnetometerNoDeclination: return "magnetometer, declination unknown";
+    case HeadingSource::InMotion: return "in-motion alignment (velocity change)";
+    case HeadingSource::GnssCourse: return "GNSS course";
+  }
+  return "?";
+}
 
 struct AlignmentResult {
   NavState nav;
@@ -49,6 +80,11 @@ struct AlignmentResult {
   Eigen::Vector3d gyro_bias_rad_s = Eigen::Vector3d::Zero();  // mean rate at rest minus Earth rate
   double gyro_bias_sigma_rad_s = 0.0;
   double temp_ref_degC = 0.0;
+  HeadingSource heading_source = HeadingSource::GnssCourse;
+  double declination_rad = NAN;   // the declination used (magnetometer headings with one)
+  // The measured field against the model's, when the model was consulted:
+  // its strength ratio and dip difference (why it was or was not used).
+  double field_ratio = NAN, dip_difference_rad = NAN;
 };
 
 class CoarseAlignment {
@@ -66,8 +102,14 @@ class CoarseAlignment {
   bool align_in_motion(const GnssObservation& z, double t_now_s, AlignmentResult& out);
   void finish_in_motion(const GnssObservation& z, double t_now_s, const InMotionSolution& s, double yaw_rad,
                         double yaw_sigma_rad, AlignmentResult& out);
-  /// Heading [rad] from a body-frame field and an attitude whose tilt is known.
-  double mag_heading(const Eigen::Quaterniond& q_nb, const Eigen::Vector3d& mag_b_uT) const;
+  /// Heading [rad] from a body-frame field and an attitude whose tilt is known,
+  /// with the declination chosen by declination_for (source and sigma into `out`).
+  double mag_heading(const Eigen::Quaterniond& q_nb, const Eigen::Vector3d& mag_b_uT, const GnssObservation& z,
+                     double& sigma_rad, AlignmentResult& out) const;
+  /// The declination for a field measured in the levelled frame at the fix z:
+  /// given, the model's when the field is the Earth's, or none (0, wide sigma).
+  double declination_for(const Eigen::Vector3d& m_level_uT, const GnssObservation& z, double& sigma_rad,
+                         AlignmentResult& out) const;
 
   AlignmentConfig cfg_;
   AlignStatus status_ = AlignStatus::WaitingForRest;

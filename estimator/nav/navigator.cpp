@@ -41,6 +41,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   gnss_.clear();
   screen_.configure(cfg.screen);
   alignment_.configure(cfg.alignment);
+  alignment_result_ = {};
   recovery_.configure(cfg.recovery);
   vel_noise_started_ = false;
   stillness_.configure(cfg.stillness);
@@ -233,6 +234,7 @@ void Navigator::align(const ImuSample& s, double dt) {
     const GnssObservation z = gnss_.front();
     gnss_.pop();
     if (!alignment_.add_gnss(z, s.t_s, res)) continue;
+    alignment_result_ = res;
     nav_ = res.nav;
     filter_.seed_attitude(res.att_sigma_rad);
     filter_.reset_block(filter_.layout().vel, res.vel_sigma_m_s);

@@ -156,6 +156,8 @@ class Navigator {
            (cfg_.vehicle == VehicleKind::Auto && vehicle_.guess() == VehicleGuess::Ground);
   }
   const VehicleDetector& vehicle_detector() const { return vehicle_; }
+  /// How the alignment went (valid once aligned): the heading's source, the declination used.
+  const AlignmentResult& alignment_result() const { return alignment_result_; }
   const NavigatorConfig& config() const { return cfg_; }
   /// The noise sigmas in use now (learnt, or as configured).
   double gnss_velocity_sigma_m_s() const { return vel_noise_.sigma(); }
@@ -184,6 +186,7 @@ class Navigator {
   RingBuffer<ImuSample, kImuBufferCapacity> imu_;
   RingBuffer<GnssObservation, kGnssBufferCapacity> gnss_;
   CoarseAlignment alignment_;
+  AlignmentResult alignment_result_;
   ErrorStateFilter filter_;
   GnssRecovery recovery_;
   NavState nav_;

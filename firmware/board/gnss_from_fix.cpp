@@ -1,5 +1,7 @@
 #include "firmware/board/gnss_from_fix.hpp"
 
+#include "estimator/earth/geomagnetic_model.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -28,6 +30,10 @@ bool gnss_from_fix(const drivers::GpsFix& fix, const GnssSigmaConfig& cfg, est::
   }
   for (Eigen::Index i = 0; i < 3; ++i) sig(i) = std::max(sig(i), cfg.min_sigma_m);
   out.sigma_ned_m = sig;
+  if (fix.date) {
+    out.decimal_year = est::geomag::decimal_year(fix.date->year, fix.date->month, fix.date->day,
+                                                 static_cast<double>(fix.utc_ms) / 1000.0);
+  }
   if (fix.speed_m_s && fix.course_deg) {
     out.has_velocity = true;
     out.speed_m_s = *fix.speed_m_s;

@@ -19,16 +19,18 @@ std::vector<std::string> cells(const std::string& line) {
 }  // namespace
 
 ErrorSeries error_series(const std::string& nav_csv, const std::string& truth_csv) {
-  std::vector<double> tt, lat, lon;
+  std::vector<double> tt, lat, lon, yaw;
   {
     std::ifstream in(truth_csv);
     std::string line;
     std::getline(in, line);
     while (std::getline(in, line)) {
       const auto c = cells(line);
+      if (c.size() < 3 || c[1].empty() || c[2].empty()) continue;  // no position in this row
       tt.push_back(std::stod(c[0]));
       lat.push_back(std::stod(c[1]));
       lon.push_back(std::stod(c[2]));
+      yaw.push_back(c.size() > 9 && !c[9].empty() ? std::stod(c[9]) : NAN);
     }
   }
   ErrorSeries s;
@@ -36,7 +38,10 @@ ErrorSeries error_series(const std::string& nav_csv, const std::string& truth_cs
   std::string line;
   std::getline(in, line);
   const auto header = cells(line);
-  const auto flags_col = static_cast<std::size_t>(std::find(header.begin(), header.end(), "flags") - header.begin());
+  const auto column = [&](const char* name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const std::size_t flags_col = column("flags"), yaw_col = column("yaw");
   std::size_t k = 0;
   while (std::getline(in, line)) {
     const auto c = cells(line);
@@ -50,20 +55,25 @@ ErrorSeries error_series(const std::string& nav_csv, const std::string& truth_cs
     s.t.push_back(t);
     s.err_h.push_back(std::hypot(dn, de));
     s.flags.push_back(static_cast<std::uint32_t>(std::stoul(c[flags_col])));
+    // The nearer truth row's yaw (angles do not interpolate across +-180).
+    const double yaw_true = a < 0.5 ? yaw[k] : yaw[k + 1];
+    s.err_yaw_deg.push_back(std::remainder(std::stod(c[yaw_col]) - yaw_true, 360.0));
   }
   return s;
 }
 
-double rms_between(const ErrorSeries& s, double from, double to) {
+double rms_of(const std::vector<double>& t, const std::vector<double>& x, double from, double to) {
   double sum = 0.0;
   std::size_t n = 0;
-  for (std::size_t i = 0; i < s.t.size(); ++i) {
-    if (s.t[i] < from || s.t[i] >= to) continue;
-    sum += s.err_h[i] * s.err_h[i];
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (t[i] < from || t[i] >= to || std::isnan(x[i])) continue;
+    sum += x[i] * x[i];
     ++n;
   }
   return n ? std::sqrt(sum / static_cast<double>(n)) : NAN;
 }
+
+double rms_between(const ErrorSeries& s, double from, double to) { return rms_of(s.t, s.err_h, from, to); }
 
 double max_between(const ErrorSeries& s, double from, double to) {
   double m = 0.0;

@@ -1,7 +1,8 @@
 #pragma once
 // A replay's nav.csv against the dataset's truth.csv, for the tests: the
-// horizontal error of every nav.csv row (truth interpolated linearly in time)
-// and the row's health flags; window statistics over it.
+// horizontal and yaw error of every nav.csv row (truth interpolated linearly
+// in time; the yaw NaN where truth has none) and the row's health flags;
+// window statistics over it.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -9,13 +10,15 @@
 namespace sinu::test {
 
 struct ErrorSeries {
-  std::vector<double> t, err_h;
+  std::vector<double> t, err_h, err_yaw_deg;
   std::vector<std::uint32_t> flags;
 };
 
 ErrorSeries error_series(const std::string& nav_csv, const std::string& truth_csv);
 /// Over rows with from <= t < to (NaN / 0 when there are none).
-double rms_between(const ErrorSeries& s, double from, double to);
+double rms_between(const ErrorSeries& s, double from, double to);  // of err_h
+/// RMS of x over from <= t < to, NaN values skipped (NaN when none is left).
+double rms_of(const std::vector<double>& t, const std::vector<double>& x, double from, double to);
 double max_between(const ErrorSeries& s, double from, double to);
 std::uint32_t flags_between(const ErrorSeries& s, double from, double to);
 

@@ -2,6 +2,7 @@
 // One GNSS epoch as the estimator sees it (the firmware converts a driver
 // GpsFix into this). Position of the antenna, horizontal velocity, course.
 #include <Eigen/Core>
+#include <cmath>
 
 namespace sinu::est {
 
@@ -15,6 +16,7 @@ struct GnssObservation {
   double sigma_vel_m_s = 0.3;
   double speed_m_s = 0.0;
   double course_rad = 0.0;
+  double decimal_year = NAN;  // UTC date of the fix when the receiver sent one (RMC, ZDA): the geomagnetic model's epoch
 };
 
 }  // namespace sinu::est

@@ -67,6 +67,16 @@ bool alike_in_every_phase(const InnovationStats& st, std::size_t k) {
   return true;
 }
 
+// The source's best-fitting flight phase (with enough samples): an effect
+// shows where the vehicle excites it, a noise level set too small everywhere,
+// so the best phase's NIS is the noise's share of the misfit.
+double best_phase_nis(const InnovationStats& st, std::size_t k) {
+  double best = st.source[k].nis();
+  for (const ComponentStats& p : st.by_phase[k])
+    if (p.count >= 50) best = std::min(best, p.nis());
+  return best;
+}
+
 }  // namespace
 
 std::string untestable_reason(est::Effect effect, const replay::Excitation& x) {
@@ -158,15 +168,18 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
   // The magnetometer's and the GNSS velocity's sigmas are guesses (GST reports
   // only the position's). A too-generous sigma hides effects: when a source's
   // NIS per component is below 0.5, scale its sigma by sqrt(NIS) (the factor
-  // for white noise) so it is 1. Upwards only when the misfit is alike in every
-  // flight phase (a noise level set too small: a missing effect shows where
-  // the vehicle excites it, in turns, climbs or speed changes, and inflating
-  // the sigma would hide it).
+  // for white noise) so it is 1. Upwards only by what every flight phase shows
+  // (a noise level set too small: a missing effect shows where the vehicle
+  // excites it, in turns, climbs or speed changes, and inflating the sigma by
+  // that would hide it): by the whole misfit when it is alike in every phase,
+  // else by the best phase's when even that is well above 1 (an overconfident
+  // sensor also drags the attitude, which misfits most in turns).
   auto sigma_factor = [&](std::size_t k) {
     const ComponentStats& c = current.stats.source[k];
     if (c.count <= 100) return 1.0;
-    const double nis = c.nis();
+    const double nis = c.nis(), floor = best_phase_nis(current.stats, k);
     if (nis < 0.5 || (nis > 1.5 && alike_in_every_phase(current.stats, k))) return std::sqrt(nis);
+    if (floor > 1.5) return std::sqrt(floor);
     return 1.0;
   };
   const double mag_factor = sigma_factor(2), vel_factor = sigma_factor(1);
@@ -249,6 +262,12 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
       c.penalty = 0.5 * static_cast<double>(est::kEffectDims[static_cast<std::size_t>(effect)]) * ln_n;
       for (const replay::EffectEstimate& eff : score.effects) {
         if (eff.effect != effect) continue;
+        // Soft iron: a scale common to the three diagonal terms (xx yy zz) trades
+        // against the Earth field's strength, itself a state, so it is no evidence
+        // of soft iron; only the diagonal's differences and the cross terms are.
+        const double common_scale = effect == est::Effect::MagSoftIron
+                                        ? (eff.estimate[0] + eff.estimate[1] + eff.estimate[2]) / 3.0
+                                        : 0.0;
         for (std::size_t k = 0; k < eff.estimate.size(); ++k) {
           const double v = eff.estimate[k], sg = eff.sigma[k];
           c.estimate.push_back(v);
@@ -259,8 +278,10 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
           double prior = 0.0;
           if (effect == est::Effect::GpsLatency) prior = o.replay.unit.gps_latency_s;
           if (effect == est::Effect::LeverArm) prior = o.replay.unit.lever_arm_b_m(static_cast<Eigen::Index>(k));
+          if (effect == est::Effect::MagSoftIron && k < 3) prior = common_scale;
           if (sg > 0.0) c.significance = std::max(c.significance, std::abs(v - prior) / sg);
-          c.plausibility = std::max(c.plausibility, std::abs(v) / est::spec(effect).plausible_max);
+          c.plausibility = std::max(c.plausibility, std::abs(v - (k < 3 ? common_scale : 0.0)) /
+                                                        est::spec(effect).plausible_max);
         }
       }
       c.stats = score.stats;

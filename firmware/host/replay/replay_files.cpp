@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
 namespace sinu::replay {
 
@@ -94,6 +95,15 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
   sj["duration_s"] = r.duration_s;
   sj["aligned"] = r.aligned;
   sj["aligned_at_s"] = r.aligned ? json(r.aligned_at_s) : json(nullptr);
+  if (r.aligned) {
+    constexpr double kDeg = 180.0 / std::numbers::pi;
+    const est::AlignmentResult& a = r.alignment;
+    sj["alignment"] = {{"at_rest", a.at_rest},
+                       {"heading_from", est::heading_source_name(a.heading_source)},
+                       {"declination_deg", num(a.declination_rad * kDeg)},
+                       {"field_over_model", num(a.field_ratio)},
+                       {"dip_minus_model_deg", num(a.dip_difference_rad * kDeg)}};
+  }
   sj["rmse"] = {{"pos_h_m", num(r.rmse_pos_h_m())}, {"pos_v_m", num(r.rmse_pos_v_m())}, {"vel_m_s", num(r.rmse_vel_m_s())},
                 {"att_deg", num(r.rmse_att_deg())}, {"truth_points", m.compared}};
   json outs = json::array();

@@ -65,6 +65,7 @@ struct ReplayResult {
   est::NavCounters counters;
   GnssFeedCounters gnss;
   VehicleOutcome vehicle;
+  est::AlignmentResult alignment;  // how the first solution came about (valid when aligned)
   SourceCounters source;
   double gnss_velocity_sigma_m_s = 0.0, mag_sigma_uT = 0.0;  // in use at the end (learnt or fixed)
   std::string note;               // what the user must know ("" if nothing): truncated recording, dropped rows

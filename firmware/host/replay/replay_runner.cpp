@@ -190,6 +190,7 @@ void collect(const board::NavUnit& unit, ReplayResult& r) {
     r.sensor_error_sigma[static_cast<std::size_t>(a)] = f.sensor_error_sigma(a);
   }
   r.aligned = nav.aligned();
+  r.alignment = nav.alignment_result();
   r.counters = nav.counters();
   const est::VehicleDetector& vd = nav.vehicle_detector();
   r.vehicle = {nav.config().vehicle, nav.ground_vehicle(), vd.guess(), vd.decided_at_s(), vd.lateral_rms_m_s(),

@@ -1,5 +1,7 @@
 #include "firmware/host/sim/environment.hpp"
 
+#include "estimator/earth/geomagnetic_model.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -28,14 +30,8 @@ TemperatureProfile draw_bench_temperature(Rng& rng) {
   return p;
 }
 
-Eigen::Vector3d draw_earth_field_n_uT(double lat, Rng& rng) {
-  constexpr double kEquatorField_uT = 30.0;  // dipole: 30 uT at the equator, 60 uT at the poles
-  const double s = std::sin(lat);
-  const double magnitude = kEquatorField_uT * std::sqrt(1.0 + 3.0 * s * s);
-  const double inclination = std::atan(2.0 * std::tan(lat));
-  const double declination = rng.uniform(-15.0, 15.0) * std::numbers::pi / 180.0;
-  const double ci = std::cos(inclination);
-  return magnitude * Eigen::Vector3d(ci * std::cos(declination), ci * std::sin(declination), std::sin(inclination));
+Eigen::Vector3d earth_field_n_uT(double lat_rad, double lon_rad, double h_m, double decimal_year) {
+  return est::geomag::geomagnetic_field(lat_rad, lon_rad, h_m, decimal_year).b_n_uT;
 }
 
 }  // namespace sinu::sim

@@ -24,8 +24,11 @@ TemperatureProfile draw_flight_temperature(Rng& rng);
 /// cycle of 0.5-1 degC with a period of 1-2 h.
 TemperatureProfile draw_bench_temperature(Rng& rng);
 
-/// A constant Earth field in NED [uT]: dipole-like magnitude and inclination
-/// for the latitude, a random declination of up to 15 deg.
-Eigen::Vector3d draw_earth_field_n_uT(double lat_rad, Rng& rng);
+/// The Earth field in NED [uT] at a site and date: the World Magnetic Model's
+/// main field (what a real unit there measures, less crustal anomalies), so
+/// the declination a navigator takes from the same model is the true one.
+Eigen::Vector3d earth_field_n_uT(double lat_rad, double lon_rad, double h_m, double decimal_year);
+/// A bench has no GNSS to date it: its field is the model's at this epoch.
+inline constexpr double kBenchDecimalYear = 2025.5;
 
 }  // namespace sinu::sim

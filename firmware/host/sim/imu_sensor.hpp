@@ -39,6 +39,7 @@ class ImuSensor {
  public:
   ImuSensor(const ImuErrorModel& model, const Effects& effects, const Eigen::Vector3d& earth_field_n_uT,
             double dt_s, Rng& noise_rng);
+  void set_earth_field(const Eigen::Vector3d& earth_field_n_uT) { earth_field_n_uT_ = earth_field_n_uT; }
   ImuOutput sample(const Eigen::Vector3d& specific_force_b, const Eigen::Vector3d& omega_ib_b,
                    const Eigen::Matrix3d& C_nb, double temp_degC);
 

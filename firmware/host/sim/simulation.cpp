@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include "estimator/earth/geomagnetic_model.hpp"
 #include "firmware/host/dataset/dataset_paths.hpp"
 #include "firmware/host/dataset/imu_csv.hpp"
 #include "firmware/host/dataset/meta_json.hpp"
@@ -93,11 +94,12 @@ bool run_simulation(const SimOptions& o, SimResult& result, dataset::Diagnostic&
   // Board clock at the first sample: not zero (dataset-format.md), whole milliseconds.
   const double t0 = std::round(traj_rng.uniform(100.0, 5000.0) * 1000.0) / 1000.0;
   const TemperatureProfile temp = flight ? draw_flight_temperature(env_rng) : draw_bench_temperature(env_rng);
-  const Eigen::Vector3d earth_field = draw_earth_field_n_uT(site.lat_rad, env_rng);
+  Eigen::Vector3d earth_field = earth_field_n_uT(site.lat_rad, site.lon_rad, site.ground_h_m, kBenchDecimalYear);
 
   const double dt = 1.0 / o.imu_rate_hz;
   const auto substeps = static_cast<std::uint64_t>(std::ceil(o.min_internal_rate_hz / o.imu_rate_hz));
   const auto n_imu = static_cast<std::uint64_t>(std::floor(o.duration_s * o.imu_rate_hz));
+  // A flight's field is that of its date, set once its clock is drawn below.
   ImuSensor imu(model, o.effects, earth_field, dt, noise_rng);
 
   dataset::CsvWriter imu_out(dataset::kImuSchema), truth_out(dataset::kTruthSchema);
@@ -117,6 +119,10 @@ bool run_simulation(const SimOptions& o, SimResult& result, dataset::Diagnostic&
     clock.year = 2024 + static_cast<int>(traj_rng.below(3));
     clock.month = 1 + static_cast<int>(traj_rng.below(12));
     clock.day = 1 + static_cast<int>(traj_rng.below(28));
+    earth_field = earth_field_n_uT(site.lat_rad, site.lon_rad, site.ground_h_m,
+                                   est::geomag::decimal_year(clock.year, clock.month, clock.day,
+                                                             std::fmod(t0 + clock.utc_minus_board_s, 86400.0)));
+    imu.set_earth_field(earth_field);
     GpsReceiver gps(o.gps, o.effects, clock, fix_period, o.seed);
     std::uint64_t fix_index = 1;
     // The fix stamped t_e measures the antenna at t_e - latency.
