@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "estimator/earth/wgs84.hpp"
+#include "estimator/ekf/aiding/declination/declination.hpp"
 #include "estimator/ekf/aiding/gnss_position/gnss_position.hpp"
 #include "estimator/ekf/aiding/gnss_velocity/gnss_velocity.hpp"
 #include "estimator/ekf/aiding/magnetometer/magnetometer.hpp"
@@ -390,6 +391,15 @@ void Navigator::fuse_magnetometer(const ImuSample& s) {
     predict_.flush(filter_);
     filter_.activate_deferred();
     filter_.start_mag_field(nav_, s.mag_b_uT, mag_noise_.sigma());
+    // The declination the heading was aligned with (given, or the model's for a
+    // field it recognised) is known beyond this flight: the field's direction too.
+    if (std::isfinite(alignment_result_.declination_rad) && filter_.layout().has(Effect::MagEarthField)) {
+      const UpdateResult r = fuse_measurement(
+          filter_.P(), dx_,
+          declination_measurement(filter_, alignment_result_.declination_rad, cfg_.declination_sigma_rad, 1e9),
+          frozen_);
+      if (r.accepted) filter_.feedback(dx_, nav_);
+    }
     mag_started_ = true;
     last_mag_fused_t_s_ = s.t_s;
     return;

@@ -77,6 +77,9 @@ struct NavigatorConfig {
   // alignment; sigma covers the sensor noise and small disturbances.
   bool use_mag = true;
   double mag_sigma_uT = 1.0;          // initial value when adapted
+  // The declination's uncertainty as a prior on the Earth field's direction:
+  // the World Magnetic Model's 0.3-0.5 deg, local anomalies, residual soft iron.
+  double declination_sigma_rad = 0.035;
   // Noise the data do not state, learnt from the innovations (noise_adapter.hpp):
   // GNSS velocity (NMEA has no accuracy for it; the initial value is the
   // observation's sigma) and the magnetometer.
