@@ -69,6 +69,11 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
               num(r.rmse_pos_h_m()).c_str(), num(r.rmse_pos_v_m()).c_str(), num(r.rmse_vel_m_s()).c_str(),
               num(r.rmse_att_deg()).c_str(), num(m.compared).c_str(), num(r.gnss_rmse_pos_h_m()).c_str(),
               num(r.gnss_rmse_pos_v_m()).c_str());
+  if (r.truth_is_gnss_input()) {
+    std::printf("  note: truth.csv is the GNSS input itself (GNSS alone %s m from it): the rmse above is the solution's "
+                "distance from its own fixes, not an accuracy; only GNSS outages (--outage) compare it with an "
+                "independent reference\n", num(r.gnss_rmse_pos_h_m()).c_str());
+  }
   for (const replay::OutageDrift& o : m.outages) {
     std::printf("  outage %.1f s +%.0f s: max horizontal drift %s m\n", o.window.start_s, o.window.duration_s,
                 o.points ? num(o.max_drift_h_m).c_str() : "n/a");

@@ -154,7 +154,7 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
                  {"magnetometer_sigma_uT", r.mag_sigma_uT},
                  {"magnetometer_learnt", opt.unit.adapt_mag_noise}};
   sj["gnss_only_rmse"] = {{"pos_h_m", num(r.gnss_rmse_pos_h_m())}, {"pos_v_m", num(r.gnss_rmse_pos_v_m())},
-                          {"fixes", m.gnss_compared}};
+                          {"fixes", m.gnss_compared}, {"truth_is_gnss_input", r.truth_is_gnss_input()}};
   json sens = json::object();
   static constexpr const char* kAxes[] = {"ax", "ay", "az", "gx", "gy", "gz"};
   for (std::size_t a = 0; a < est::kSensorAxes; ++a) {
