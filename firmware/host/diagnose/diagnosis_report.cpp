@@ -5,57 +5,13 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "firmware/host/diagnose/diagnosis_text.hpp"
+
 namespace sinu::diagnose {
 
 namespace {
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
-std::string effect_list(const est::EffectSet& s) {
-  std::string out;
-  for (std::size_t e = 0; e < est::kEffectCount; ++e) {
-    if (s.has(static_cast<est::Effect>(e))) out += std::string(out.empty() ? "" : ", ") + est::kEffectNames[e];
-  }
-  return out.empty() ? "none" : out;
-}
-
-std::string estimate_text(const CandidateResult& c) {
-  const auto e = static_cast<std::size_t>(c.effect);
-  std::string out;
-  for (std::size_t i = 0; i < c.estimate.size(); ++i) {
-    out += (i ? ", " : "") + fmt("%.4g", c.estimate[i] * est::kEffects[e].display_scale) + " +- " +
-           fmt("%.2g", c.sigma[i] * est::kEffects[e].display_scale);
-  }
-  return (c.estimate.size() > 1 ? "[" + out + "]" : out) + " " + est::kEffects[e].unit;
-}
-
-std::string nis_cell(const ComponentStats& s) { return s.count ? fmt("%.2f", s.nis()) : std::string("-"); }
-
-std::string rmse_text(double v, const char* unit) { return v >= 0.0 ? fmt("%.3g", v) + " " + unit : std::string("n/a"); }
-
-// The (source, phase) cell where the model fits worst relative to the same
-// source over the whole flight: a missing effect shows up where the vehicle
-// does what excites it (a latency in speed changes, a lever arm in turns).
-std::string worst_cell(const InnovationStats& s) {
-  double worst = 0.0;
-  std::string text;
-  for (std::size_t k = 0; k < kSources; ++k) {
-    const double overall = s.source[k].nis();
-    if (!(overall > 0.0)) continue;
-    for (std::size_t p = 0; p < kPhaseCount; ++p) {
-      const ComponentStats& c = s.by_phase[k][p];
-      if (c.count < 50 || c.nis() / overall <= worst) continue;
-      worst = c.nis() / overall;
-      text = std::string(kSourceNames[k]) + " during " + kPhaseNames[p] + " (NIS " + fmt("%.2f", c.nis()) + ", " +
-             fmt("%.1f", worst) + "x its flight average " + fmt("%.2f", overall) + "; 1 when the model is right)";
-    }
-  }
-  return text;
-}
+std::string fmt(const char* f, double v) { return format_number(f, v); }
 
 }  // namespace
 
@@ -63,59 +19,22 @@ std::string diagnosis_summary(const DiagnoseOptions& o, const Diagnosis& d) {
   std::string out = "diagnose " + o.replay.in_dir + "\n";
   if (d.rounds.empty()) return out;
   const Round& base = d.rounds.front();
-  // A noise level is a diagnosis too: which sigma, how far off, and why it is noise.
-  auto tuned_line = [&](const char* what, double given, double used, const char* unit) {
-    const double f = used / given;
-    return std::string("  noise: ") + what + " sigma " + fmt("%.3g", given) + " " + unit + " was set " +
-           fmt("%.2f", f > 1.0 ? f : 1.0 / f) + "x too " + (f > 1.0 ? "small" : "large") + " (NIS per component " +
-           fmt("%.2f", f * f) + (f > 1.0 ? ", alike in every flight phase: a noise level, not a missing effect" : "") +
-           "); diagnosed with " + fmt("%.3g", used) + " " + unit + "\n";
-  };
-  if (d.mag_sigma_uT != d.mag_sigma_given_uT) out += tuned_line("magnetometer", d.mag_sigma_given_uT, d.mag_sigma_uT, "uT");
-  if (d.vel_sigma_m_s != d.vel_sigma_given_m_s)
-    out += tuned_line("GNSS velocity", d.vel_sigma_given_m_s, d.vel_sigma_m_s, "m/s");
-  if (d.process_noise_scale != 1.0) {
-    out += "  no calib.json: the built-in sensor model's coloured-error variances scaled by " +
-           fmt("%.2g", d.process_noise_scale) + " (maximum likelihood of the innovations)\n";
-  }
+  for (const std::string& n : tuned_noise_findings(d)) out += "  noise: " + n + "\n";
+  if (const std::string p = process_noise_text(d); !p.empty()) out += "  " + p + "\n";
   out += "  baseline model (" + effect_list(base.model) + "): fits worst in " + worst_cell(base.stats) + "\n";
   if (d.missing.empty()) {
     out += "  no candidate effect explains the misfit (see report.md for each candidate's score)\n";
   }
-  for (std::size_t r = 0; r < d.rounds.size(); ++r) {
-    const Round& round = d.rounds[r];
-    if (!round.found) continue;
-    const CandidateResult& c = round.candidates.front();
-    out += "  missing effect: " + std::string(est::kEffectNames[static_cast<std::size_t>(c.effect)]) + " = " +
-           estimate_text(c) + " (innovation log-likelihood +" + fmt("%.1f", c.nll_gain) + ", BIC penalty " +
-           fmt("%.1f", c.penalty) + ")\n";
-  }
-  est::EffectSet told;  // each implausible fit once (the first round it appeared in)
   for (const Round& round : d.rounds) {
-    for (const CandidateResult& c : round.candidates) {
-      if (!c.implausible_fit(o.min_significance) || told.has(c.effect)) continue;
-      told.add(c.effect);
-      const est::EffectSpec& sp = est::spec(c.effect);
-      out += "  not named: " + std::string(sp.name) + " would fit (log-likelihood +" + fmt("%.1f", c.nll_gain) +
-             ") but only at " + fmt("%.3g", c.plausibility * sp.plausible_max * sp.display_scale) + " " + sp.unit +
-             ", beyond the " + fmt("%.3g", sp.plausible_max * sp.display_scale) + " " + sp.unit +
-             " a real unit has: the misfit is something else\n";
-    }
+    if (round.found) out += "  missing effect: " + missing_effect_text(round.candidates.front()) + "\n";
   }
+  for (const std::string& n : implausible_fits(d, o.min_significance)) out += "  not named: " + n + "\n";
   for (const std::string& n : d.noise_findings) out += "  noise: " + n + "\n";
   for (const Diagnosis::Skipped& s : d.skipped)
     out += "  not tested: " + std::string(est::spec(s.effect).name) + " (" + s.reason + ")\n";
   const Round& last = d.rounds.back();
   if (!d.missing.empty()) {
-    out += "  error before -> after: horizontal RMSE " + rmse_text(base.rmse_pos_h_m, "m") + " -> " +
-           rmse_text(last.rmse_pos_h_m, "m") + ", attitude " + rmse_text(base.rmse_att_deg, "deg") + " -> " +
-           rmse_text(last.rmse_att_deg, "deg") + "; NIS per component";
-    for (std::size_t k = 0; k < kSources; ++k) {
-      if (!base.stats.source[k].count) continue;
-      out += std::string(" ") + kSourceNames[k] + " " + nis_cell(base.stats.source[k]) + " -> " +
-             nis_cell(last.stats.source[k]);
-    }
-    out += "\n";
+    out += "  error before -> after: " + before_after_text(base, last) + "\n";
   }
   if (!d.model_file.empty())
     out += "  applied: " + d.model_file + " (start the next flight from it: --model-file, or navigation.model_file)\n";

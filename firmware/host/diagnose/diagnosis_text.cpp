@@ -1,0 +1,174 @@
+#include "firmware/host/diagnose/diagnosis_text.hpp"
+
+#include <cstdio>
+
+namespace sinu::diagnose {
+
+namespace {
+
+// The model's error in one run: RMSE against truth and NIS per source.
+std::string error_text(const Round& r) {
+  std::string out = "horizontal RMSE " + rmse_text(r.rmse_pos_h_m, "m") + ", attitude " + rmse_text(r.rmse_att_deg, "deg") +
+                    "; NIS per component";
+  for (std::size_t k = 0; k < kSources; ++k) {
+    if (r.stats.source[k].count) out += std::string(" ") + kSourceNames[k] + " " + nis_cell(r.stats.source[k]);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string format_number(const char* printf_format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, printf_format, v);
+  return buf;
+}
+
+std::string effect_list(const est::EffectSet& s) {
+  std::string out;
+  for (std::size_t e = 0; e < est::kEffectCount; ++e) {
+    if (!s.has(static_cast<est::Effect>(e))) continue;
+    if (!out.empty()) out += ", ";
+    out += est::kEffectNames[e];
+  }
+  return out.empty() ? "none" : out;
+}
+
+std::string estimate_component_text(const CandidateResult& c, std::size_t i, const char* plus_minus) {
+  const double scale = est::spec(c.effect).display_scale;
+  return format_number("%.4g", c.estimate[i] * scale) + " " + plus_minus + " " + format_number("%.2g", c.sigma[i] * scale);
+}
+
+std::string estimate_text(const CandidateResult& c) {
+  std::string out;
+  for (std::size_t i = 0; i < c.estimate.size(); ++i) {
+    if (i) out += ", ";
+    out += estimate_component_text(c, i);
+  }
+  if (c.estimate.size() > 1) out = "[" + out + "]";
+  return out + " " + est::spec(c.effect).unit;
+}
+
+std::string nis_cell(const ComponentStats& s) { return s.count ? format_number("%.2f", s.nis()) : std::string("-"); }
+
+std::string rmse_text(double v, const char* unit) {
+  return v >= 0.0 ? format_number("%.3g", v) + " " + unit : std::string("n/a");
+}
+
+// A missing effect shows up where the vehicle does what excites it (a latency
+// in speed changes, a lever arm in turns): the phase whose NIS stands out most
+// from the same source's flight average.
+std::size_t worst_phase(const InnovationStats& s, std::size_t k, double& ratio) {
+  ratio = 0.0;
+  std::size_t worst = kPhaseCount;
+  const double overall = s.source[k].nis();
+  if (!(overall > 0.0)) return worst;
+  for (std::size_t p = 0; p < kPhaseCount; ++p) {
+    const ComponentStats& c = s.by_phase[k][p];
+    if (c.count < 50 || c.nis() / overall <= ratio) continue;
+    ratio = c.nis() / overall;
+    worst = p;
+  }
+  return worst;
+}
+
+std::string worst_cell(const InnovationStats& s) {
+  double worst = 0.0;
+  std::string text;
+  for (std::size_t k = 0; k < kSources; ++k) {
+    double ratio = 0.0;
+    const std::size_t p = worst_phase(s, k, ratio);
+    if (p == kPhaseCount || ratio <= worst) continue;
+    worst = ratio;
+    text = std::string(kSourceNames[k]) + " during " + kPhaseNames[p] + " (NIS " +
+           format_number("%.2f", s.by_phase[k][p].nis()) + ", " + format_number("%.1f", ratio) +
+           "x its flight average " + format_number("%.2f", s.source[k].nis()) + "; 1 when the model is right)";
+  }
+  return text;
+}
+
+std::vector<std::string> tuned_noise_findings(const Diagnosis& d) {
+  // A noise level is a diagnosis too: which sigma, how far off, and why it is noise.
+  auto tuned_line = [](const char* what, double given, double used, const char* unit) {
+    const double f = used / given;
+    std::string line = std::string(what) + " sigma " + format_number("%.3g", given) + " " + unit + " was set ";
+    line += format_number("%.2f", f > 1.0 ? f : 1.0 / f) + "x too " + (f > 1.0 ? "small" : "large") +
+            " (NIS per component " + format_number("%.2f", f * f);
+    if (f > 1.0) line += ", alike in every flight phase: a noise level, not a missing effect";
+    line += "); diagnosed with " + format_number("%.3g", used) + " " + unit;
+    return line;
+  };
+  std::vector<std::string> out;
+  if (d.mag_sigma_uT != d.mag_sigma_given_uT)
+    out.push_back(tuned_line("magnetometer", d.mag_sigma_given_uT, d.mag_sigma_uT, "uT"));
+  if (d.vel_sigma_m_s != d.vel_sigma_given_m_s)
+    out.push_back(tuned_line("GNSS velocity", d.vel_sigma_given_m_s, d.vel_sigma_m_s, "m/s"));
+  return out;
+}
+
+std::string process_noise_text(const Diagnosis& d) {
+  if (d.process_noise_scale == 1.0) return "";
+  return "no calib.json: the built-in sensor model's coloured-error variances scaled by " +
+         format_number("%.2g", d.process_noise_scale) + " (maximum likelihood of the innovations)";
+}
+
+std::string missing_effect_text(const CandidateResult& c) {
+  return std::string(est::spec(c.effect).name) + " = " + estimate_text(c) + " (innovation log-likelihood +" +
+         format_number("%.1f", c.nll_gain) + ", BIC penalty " + format_number("%.1f", c.penalty) + ")";
+}
+
+std::string implausible_fit_text(const CandidateResult& c) {
+  const est::EffectSpec& sp = est::spec(c.effect);
+  return std::string(sp.name) + " would fit (log-likelihood +" + format_number("%.1f", c.nll_gain) + ") but only at " +
+         format_number("%.3g", c.plausibility * sp.plausible_max * sp.display_scale) + " " + sp.unit + ", beyond the " +
+         format_number("%.3g", sp.plausible_max * sp.display_scale) + " " + sp.unit +
+         " a real unit has: the misfit is something else";
+}
+
+std::vector<std::string> implausible_fits(const Diagnosis& d, double min_significance) {
+  std::vector<std::string> out;
+  est::EffectSet told;
+  for (const Round& round : d.rounds) {
+    for (const CandidateResult& c : round.candidates) {
+      if (!c.implausible_fit(min_significance) || told.has(c.effect)) continue;
+      told.add(c.effect);
+      out.push_back(implausible_fit_text(c));
+    }
+  }
+  return out;
+}
+
+std::string before_after_text(const Round& before, const Round& after) {
+  std::string out = "horizontal RMSE " + rmse_text(before.rmse_pos_h_m, "m") + " -> " +
+                    rmse_text(after.rmse_pos_h_m, "m") + ", attitude " + rmse_text(before.rmse_att_deg, "deg") + " -> " +
+                    rmse_text(after.rmse_att_deg, "deg") + "; NIS per component";
+  for (std::size_t k = 0; k < kSources; ++k) {
+    if (!before.stats.source[k].count) continue;
+    out += std::string(" ") + kSourceNames[k] + " " + nis_cell(before.stats.source[k]) + " -> " +
+           nis_cell(after.stats.source[k]);
+  }
+  return out;
+}
+
+std::string conclusion_sentence(const Diagnosis& d) {
+  if (d.rounds.empty()) return "No diagnosis: the baseline replay did not run.";
+  std::string found;
+  for (const Round& round : d.rounds) {
+    if (!round.found) continue;
+    if (!found.empty()) found += "; ";
+    found += missing_effect_text(round.candidates.front());
+  }
+  if (!found.empty()) {
+    return std::string(d.missing.size() > 1 ? "Missing effects: " : "Missing effect: ") + found +
+           ". Error before -> after: " + before_after_text(d.rounds.front(), d.rounds.back()) + ".";
+  }
+  const std::string error = error_text(d.rounds.back());
+  if (d.noise_findings.empty())
+    return "The model explains the data: no candidate effect raises the innovations' log-likelihood beyond its BIC "
+           "penalty. Error: " + error + ".";
+  return "No effect of the vocabulary explains the misfit, and " + std::to_string(d.noise_findings.size()) +
+         " noise level" + (d.noise_findings.size() > 1 ? "s do" : " does") + " not fit (see the noise findings). Error: " +
+         error + ".";
+}
+
+}  // namespace sinu::diagnose
