@@ -19,6 +19,7 @@ packages=(
   python3 python3-numpy python3-matplotlib   # report plots (tools/*.py via /usr/bin/python3)
   parallel                 # GNU parallel: tools/diagnose_fleet.sh
   gpsd-clients             # gpsdecode: gpsd's NMEA decoder checks the NMEA output (Debian 12 ships it here, not in gpsd-tools)
+  chromium                 # headless: test_diagnose_html_browser opens diagnose's report.html and checks its plots
 )
 for arg in "$@"; do
   case "$arg" in

@@ -50,7 +50,8 @@ int run(DiagnoseCliOptions& c) {
     std::fprintf(stderr, "sinu diagnose: %s\n", error.c_str());
     return kExitFailure;
   }
-  std::printf("%s  report: %s/report.md\n", diagnose::diagnosis_summary(c.opt, d).c_str(), c.opt.out_dir.c_str());
+  std::printf("%s  report: %s/report.md, %s/report.html\n", diagnose::diagnosis_summary(c.opt, d).c_str(),
+              c.opt.out_dir.c_str(), c.opt.out_dir.c_str());
   return kExitOk;
 }
 
@@ -64,7 +65,8 @@ void add_diagnose_command(CLI::App& app, Action& action) {
   sub->add_option("--rounds", c->opt.rounds, "How many effects to look for, one after the other")
       ->capture_default_str()
       ->check(CLI::Range(1, 5));
-  sub->add_option("--out", c->opt.out_dir, "Output folder: report.md, diagnosis.json and the baseline replay (baseline/)")
+  sub->add_option("--out", c->opt.out_dir,
+                  "Output folder: report.md, report.html, diagnosis.json and the baseline replay (baseline/)")
       ->required();
   sub->add_option("--threads", c->opt.threads, "Candidate replays at once (0: one per core)")->capture_default_str();
   sub->add_flag("--quiet", c->quiet, "No progress lines on stderr");

@@ -12,6 +12,7 @@
 
 #include "firmware/board/effect_selection.hpp"
 #include "firmware/board/model_file.hpp"
+#include "firmware/host/diagnose/diagnosis_html.hpp"
 #include "firmware/host/diagnose/diagnosis_report.hpp"
 #include "firmware/host/replay/replay_files.hpp"
 
@@ -22,6 +23,8 @@ namespace {
 struct RunScore {
   InnovationStats stats;
   double rmse_pos_h_m = -1.0, rmse_att_deg = -1.0;
+  double outage_drift_h_m = -1.0;  // RMS of the largest horizontal drift per outage (-1: none scored)
+  InnovationSeries series;         // with keep_series only
   std::vector<replay::EffectEstimate> effects;
   replay::Excitation excitation;
 };
@@ -32,19 +35,24 @@ constexpr double kG = 9.80665;
 double or_minus_one(double v) { return std::isfinite(v) ? v : -1.0; }
 
 /// One replay with `effects`, scored in memory; with `files_dir`, its nav.csv,
-/// innovations.csv and summary.json are written there too.
-bool replay_and_score(replay::ReplayOptions opt, est::EffectSet effects, const std::string& files_dir, RunScore& out,
-                      std::string& error) {
+/// innovations.csv and summary.json are written there too; with `keep_series`,
+/// its innovations over time are kept (the baseline's, for report.html).
+bool replay_and_score(replay::ReplayOptions opt, est::EffectSet effects, const std::string& files_dir,
+                      bool keep_series, RunScore& out, std::string& error) {
   opt.unit.effects = effects;
   InnovationStatsListener stats;
-  replay::ReplayListener* const listeners[] = {&stats};
+  InnovationSeriesListener series;
+  replay::ReplayListener* const listeners[] = {&stats, &series};
+  const std::span<replay::ReplayListener* const> used(listeners, keep_series ? 2 : 1);
   replay::ReplayResult result;
-  const bool ok = files_dir.empty() ? replay::run_replay(opt, listeners, result, error, false)
-                                    : replay::replay_to_folder(opt, files_dir, 10.0, result, error, listeners, false);
+  const bool ok = files_dir.empty() ? replay::run_replay(opt, used, result, error, false)
+                                    : replay::replay_to_folder(opt, files_dir, 10.0, result, error, used, false);
   if (!ok) return false;
   out.stats = stats.stats();
+  out.series = series.take();
   out.rmse_pos_h_m = or_minus_one(result.rmse_pos_h_m());
   out.rmse_att_deg = or_minus_one(result.rmse_att_deg());
+  out.outage_drift_h_m = or_minus_one(result.outage_drift_rms_m());
   out.effects = result.effects;
   out.excitation = result.excitation;
   return true;
@@ -162,7 +170,7 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
   RunScore current;
   const std::string baseline_dir = (fs::path(o.out_dir) / "baseline").string();
   DiagnoseOptions tuned = o;
-  if (!replay_and_score(tuned.replay, model, baseline_dir, current, error)) return false;
+  if (!replay_and_score(tuned.replay, model, baseline_dir, true, current, error)) return false;
   out.mag_sigma_given_uT = out.mag_sigma_uT = o.replay.unit.mag_sigma_uT;
   out.vel_sigma_given_m_s = out.vel_sigma_m_s = o.replay.unit.sigma.velocity_sigma_m_s;
   // The magnetometer's and the GNSS velocity's sigmas are guesses (GST reports
@@ -187,7 +195,7 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
     tuned.replay.unit.mag_sigma_uT = out.mag_sigma_uT = std::max(0.05, o.replay.unit.mag_sigma_uT * mag_factor);
     tuned.replay.unit.sigma.velocity_sigma_m_s = out.vel_sigma_m_s =
         std::max(0.01, o.replay.unit.sigma.velocity_sigma_m_s * vel_factor);
-    if (!replay_and_score(tuned.replay, model, baseline_dir, current, error)) return false;
+    if (!replay_and_score(tuned.replay, model, baseline_dir, true, current, error)) return false;
   }
   // Without a calibration the built-in sensor model is a generic guess, usually
   // far too loose for a given unit: a loose model hides effects. Choose the
@@ -199,19 +207,21 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
       DiagnoseOptions trial = tuned;
       trial.replay.unit.process_noise_scale = scale;
       RunScore score;
-      if (!replay_and_score(trial.replay, model, "", score, error)) return false;
+      if (!replay_and_score(trial.replay, model, "", true, score, error)) return false;
       if (score.stats.total_nll() >= current.stats.total_nll()) break;  // the likelihood has peaked
       current = std::move(score);
       tuned = trial;
       out.process_noise_scale = scale;
     }
   }
+  out.baseline_innovations = std::move(current.series);
   for (int r = 0; r < o.rounds; ++r) {
     Round round;
     round.model = model;
     round.stats = current.stats;
     round.rmse_pos_h_m = current.rmse_pos_h_m;
     round.rmse_att_deg = current.rmse_att_deg;
+    round.outage_drift_h_m = current.outage_drift_h_m;
     const double ln_n = std::log(std::max<double>(2.0, static_cast<double>(innovation_count(current.stats))));
     // The candidates this round tries, then their replays in parallel (one per
     // core; each reads the data itself and shares nothing but `tuned`).
@@ -234,7 +244,7 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
       for (std::size_t i = next++; i < trials.size(); i = next++) {
         est::EffectSet trial = model;
         trial.add(trials[i]);
-        ok[i] = replay_and_score(tuned.replay, trial, "", scores[i], errors[i]) ? 1 : 0;
+        ok[i] = replay_and_score(tuned.replay, trial, "", false, scores[i], errors[i]) ? 1 : 0;
         const std::lock_guard<std::mutex> lock(progress);
         if (o.progress)
           std::fprintf(stderr, "diagnose: round %d: %zu/%zu candidates (%s)\n", r + 1, ++done, trials.size(),
@@ -320,6 +330,7 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
   last.stats = current.stats;
   last.rmse_pos_h_m = current.rmse_pos_h_m;
   last.rmse_att_deg = current.rmse_att_deg;
+  last.outage_drift_h_m = current.outage_drift_h_m;
   if (out.rounds.empty() || out.rounds.back().found) out.rounds.push_back(last);
   if (!o.apply_path.empty()) {
     // The final model's effects beyond the defaults, with the final run's
@@ -333,7 +344,7 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
     if (!board::write_model_file(o.apply_path, found, "sinu diagnose " + o.replay.in_dir, error)) return false;
     out.model_file = o.apply_path;
   }
-  return write_diagnosis(tuned, out, error);
+  return write_diagnosis(tuned, out, error) && write_diagnosis_html(tuned, out, error);
 }
 
 }  // namespace sinu::diagnose

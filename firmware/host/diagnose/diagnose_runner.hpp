@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "estimator/ekf/state_layout.hpp"
+#include "firmware/host/diagnose/innovation_series.hpp"
 #include "firmware/host/diagnose/innovation_stats.hpp"
 #include "firmware/host/replay/replay_options.hpp"
 #include "firmware/host/replay/replay_result.hpp"
@@ -25,7 +26,7 @@ namespace sinu::diagnose {
 
 struct DiagnoseOptions {
   replay::ReplayOptions replay;  // in_dir, calib, model, baseline effects
-  std::string out_dir;           // report.md, diagnosis.json, baseline/ (the baseline replay's files)
+  std::string out_dir;           // report.md, report.html, diagnosis.json, baseline/ (the baseline replay's files)
   est::EffectSet candidates;     // tried one at a time
   int rounds = 2;
   double min_significance = 3.0;  // |estimate| / sigma of at least one component
@@ -62,6 +63,7 @@ struct Round {
   est::EffectSet model;             // the effects in the model this round starts from
   InnovationStats stats;            // its score
   double rmse_pos_h_m = -1.0, rmse_att_deg = -1.0;
+  double outage_drift_h_m = -1.0;   // RMS of the largest horizontal drift per --outage window (-1: none)
   std::vector<CandidateResult> candidates;  // best first
   bool found = false;               // candidates.front() explains the data
 };
@@ -81,6 +83,7 @@ struct Diagnosis {
   std::vector<std::string> observability; // weakly observable components, and what would reveal them
   std::string model_file;                 // written by --apply ("" if not)
   std::vector<std::string> noise_findings;  // a source whose noise level the final model gets wrong, and by how much
+  InnovationSeries baseline_innovations;    // the first round's replay over time (report.html's plots)
 };
 
 /// What the final model's NIS per source says of its noise levels: a source
@@ -97,7 +100,7 @@ std::string untestable_reason(est::Effect effect, const replay::Excitation& x);
 void observability_notes(const CandidateResult& c, const replay::Excitation& x, std::vector<std::string>& out);
 
 /// Runs the replays (in memory; the baseline's files under out_dir/baseline)
-/// and writes report.md and diagnosis.json into out_dir. False with a one-line `error` on bad input.
+/// and writes report.md, report.html and diagnosis.json into out_dir. False with a one-line `error` on bad input.
 bool run_diagnosis(const DiagnoseOptions& options, Diagnosis& out, std::string& error);
 
 }  // namespace sinu::diagnose

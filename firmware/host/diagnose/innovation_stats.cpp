@@ -26,9 +26,9 @@ double InnovationStats::total_nll() const {
   return sum;
 }
 
-void InnovationStatsListener::on_nav(const est::NavOutput& o) {
+Phase PhaseTracker::on_nav(const est::NavOutput& o) {
   const double t = o.nav.t_s;
-  if (have_prev_ && t - prev_t_s_ < kPhasePeriodS) return;
+  if (have_prev_ && t - prev_t_s_ < kPhasePeriodS) return phase_;
   const double yaw_deg = est::euler_from_quat(o.nav.q_nb).z() * 180.0 / std::numbers::pi;
   const double speed = o.nav.v_n_m_s.head<2>().norm();
   if (have_prev_) {
@@ -40,6 +40,7 @@ void InnovationStatsListener::on_nav(const est::NavOutput& o) {
   prev_t_s_ = t;
   prev_yaw_deg_ = yaw_deg;
   prev_speed_m_s_ = speed;
+  return phase_;
 }
 
 void InnovationStatsListener::on_innovation(const est::InnovationRecord& rec) {
@@ -50,7 +51,7 @@ void InnovationStatsListener::on_innovation(const est::InnovationRecord& rec) {
     if (!(s > 0.0)) continue;  // no predicted sigma: nothing to score
     const double y = rec.result.innovation(i);
     stats_.source[k].add(y, s, rec.result.accepted);
-    stats_.by_phase[k][static_cast<std::size_t>(phase_)].add(y, s, rec.result.accepted);
+    stats_.by_phase[k][static_cast<std::size_t>(phases_.phase())].add(y, s, rec.result.accepted);
   }
 }
 

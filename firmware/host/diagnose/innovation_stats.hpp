@@ -33,20 +33,31 @@ struct InnovationStats {
   double total_nll() const;
 };
 
-/// Scores a replay's innovations while it runs: the flight phase from the
-/// solution (yaw rate, vertical speed, acceleration and speed over the last
-/// 0.1 s), each innovation component against its predicted sigma.
+/// The flight phase from the solution: yaw rate, vertical speed, acceleration
+/// and speed over the last 0.1 s (as nav.csv's rows).
+class PhaseTracker {
+ public:
+  /// The phase after this solution.
+  Phase on_nav(const est::NavOutput& out);
+  Phase phase() const { return phase_; }
+
+ private:
+  Phase phase_ = Phase::Straight;
+  bool have_prev_ = false;
+  double prev_t_s_ = 0.0, prev_yaw_deg_ = 0.0, prev_speed_m_s_ = 0.0;
+};
+
+/// Scores a replay's innovations while it runs: each innovation component
+/// against its predicted sigma, in the flight phase of the latest solution.
 class InnovationStatsListener final : public replay::ReplayListener {
  public:
-  void on_nav(const est::NavOutput& out) override;
+  void on_nav(const est::NavOutput& out) override { phases_.on_nav(out); }
   void on_innovation(const est::InnovationRecord& rec) override;
   const InnovationStats& stats() const { return stats_; }
 
  private:
   InnovationStats stats_;
-  Phase phase_ = Phase::Straight;
-  bool have_prev_ = false;
-  double prev_t_s_ = 0.0, prev_yaw_deg_ = 0.0, prev_speed_m_s_ = 0.0;
+  PhaseTracker phases_;
 };
 
 }  // namespace sinu::diagnose
