@@ -5,9 +5,79 @@
 
 #include "estimator/earth/wgs84.hpp"
 #include "estimator/ekf/covariance.hpp"
+#include "estimator/ekf/effects/effect_list.hpp"
 #include "estimator/ins/rotation.hpp"
 
 namespace sinu::est {
+
+namespace {
+
+// What effects/*.hpp see of the filter, one struct per hook.
+
+/// The IMU sample being compensated (compensate()).
+struct ImuSignals {
+  Eigen::Vector3d accel_offset, gyro_offset;  // bias-like terms, the sensor states' to start
+  Eigen::Vector3d accel_temp_offset = Eigen::Vector3d::Zero(), gyro_temp_offset = Eigen::Vector3d::Zero();
+  Eigen::Vector3d accel, gyro;  // after the offsets: scaled, crossed, coupled in turn
+  double dT = 0.0;              // temperature minus the reference
+};
+
+/// One interval's error dynamics (build_transition): an effect adds its
+/// states' columns to the velocity or attitude rows.
+struct TransitionTerms {
+  static constexpr int kMaxCols = static_cast<int>(kMaxStates);
+  const Eigen::Matrix3d& C;    // C_nb
+  const Eigen::Vector3d& f_b;  // compensated specific force, mid-interval
+  const Eigen::Vector3d& w_b;  // compensated rate, mid-interval
+  double dT, dt;
+  StateMat& Phi;
+  Eigen::Index V, A;  // velocity and attitude rows
+  Slice slice;        // the effect's states
+  template <class M> void add_velocity(Eigen::Index k, const M& cols) {
+    Phi.block(V, slice.start + k, 3, cols.cols()) += cols;
+  }
+  template <class M> void add_attitude(Eigen::Index k, const M& cols) {
+    Phi.block(A, slice.start + k, 3, cols.cols()) += cols;
+  }
+};
+
+/// Process noise and own dynamics of an effect's states.
+struct NoiseTerms {
+  const SensorNoise& noise;
+  const EffectTuning& tuning;
+  const Eigen::Vector3d& gps_bias_sigma_ned_m;
+  double dt;
+  StateMat& Phi;
+  StateVec& q;
+  Slice slice;
+  /// A random walk of this density on every state of the effect (none when not positive).
+  void walk(double density) {
+    if (!(density > 0.0)) return;
+    q.segment(slice.start, slice.size).setConstant(density * density * dt);
+  }
+};
+
+/// The estimate's own propagation over an interval.
+struct MeanTerms {
+  const EffectTuning& tuning;
+  double dt;
+};
+
+}  // namespace
+
+/// A correction being fed back (feedback()).
+struct ErrorStateFilter::FeedbackTerms {
+  ErrorStateFilter& filter;
+  const StateVec& dx;
+  Slice att;
+  Slice slice;
+  /// The attitude correction as a rotation of the navigation frame.
+  Eigen::Matrix3d attitude_rotation() const {
+    return quat_from_rotation_vector(dx.segment(att.start, 3)).toRotationMatrix();
+  }
+  /// P <- G P G^T for a 3-state block: a reset Jacobian.
+  void rotate_block(const Slice& block, const Eigen::Matrix3d& G) { filter.rotate_block(block, G); }
+};
 
 void ErrorStateFilter::init(const StateLayout& layout, const SensorNoise& noise, const EffectTuning& tuning,
                             const NavUncertainty& nav0) {
@@ -33,18 +103,16 @@ void ErrorStateFilter::init(const StateLayout& layout, const SensorNoise& noise,
     for (Eigen::Index j = 0; j < s.size; ++j) P_(s.start + j, s.start + j) = sig * sig;
   }
   gps_bias_sigma_ned_m_ = Eigen::Vector3d::Constant(tuning.sigma(Effect::GpsPositionBias));
-  gps_bias_ned_.setZero();
-  mag_field_n_.setZero();
-  mag_hard_iron_b_.setZero();
-  mag_soft_iron_.setZero();
+  value_.fill(0.0);
   sensor_hat_ = StateVec::Zero(layout.sensor.size);
   ar_clock_s_ = 0.0;
 }
 
 void ErrorStateFilter::reanchor_hard_iron(const NavState& nav, const Eigen::Vector3d& mag_b_uT, double sigma_uT) {
   if (!layout_.has(Effect::MagHardIron)) return;
-  const Eigen::Vector3d predicted = mag_soft_iron() * (nav.C_nb().transpose() * mag_field_n_);
-  mag_hard_iron_b_ = mag_b_uT - predicted;
+  const Eigen::Vector3d predicted = mag_soft_iron() * (nav.C_nb().transpose() * mag_earth_field_n_uT());
+  const Eigen::Vector3d h = mag_b_uT - predicted;
+  for (Eigen::Index i = 0; i < 3; ++i) set_effect(Effect::MagHardIron, i, h(i));
   const Slice& H = layout_.of(Effect::MagHardIron);
   const double keep = std::sqrt(P_.block(H.start, H.start, 3, 3).diagonal().maxCoeff());
   reset_block(H, Eigen::Vector3d::Constant(std::hypot(sigma_uT, keep)));
@@ -90,42 +158,23 @@ void ErrorStateFilter::build_transition(const PredictInput& in, int ar_steps, St
     Phi.block(V, L.sensor_state(sensor_axis::kFirstAccel + i), 3, 1) += C.col(i) * dt;
     Phi.block(A, L.sensor_state(sensor_axis::kFirstGyro + i), 3, 1) -= C.col(i) * dt;
   }
-  auto couple = [&](Effect e, Eigen::Index row, double sign, const Eigen::Vector3d& scale) {
-    if (!L.has(e)) return;
-    Phi.block(row, L.of(e).start, 3, 3) += sign * C * scale.asDiagonal() * dt;
-  };
-  couple(Effect::AccelScale, V, 1.0, in.specific_force_b_m_s2);
-  couple(Effect::GyroScale, A, -1.0, in.angular_rate_b_rad_s);
-  couple(Effect::AccelBias, V, 1.0, Eigen::Vector3d::Ones());
-  couple(Effect::GyroBias, A, -1.0, Eigen::Vector3d::Ones());
-  couple(Effect::AccelTempBias, V, 1.0, Eigen::Vector3d::Constant(in.temp_delta_degC));
-  couple(Effect::GyroTempBias, A, -1.0, Eigen::Vector3d::Constant(in.temp_delta_degC));
-  // Misalignment (i, j): axis i senses axis j, so its error moves sensor axis i
-  // by the other axis's reading; g-sensitivity (i, j): gyro i by specific force j.
-  if (L.has(Effect::AccelMisalign)) {
-    for (Eigen::Index k = 0; k < 6; ++k) {
-      const auto [i, j] = kOffDiagonal[static_cast<std::size_t>(k)];
-      Phi.block(V, L.of(Effect::AccelMisalign).start + k, 3, 1) += C.col(i) * (in.specific_force_b_m_s2(j) * dt);
+  // Each effect's columns (effects/*.hpp), the magnetometer's field last: it
+  // follows the attitude rows the others have written.
+  TransitionTerms t{C, in.specific_force_b_m_s2, in.angular_rate_b_rad_s, in.temp_delta_degC, dt, Phi, V, A, {}};
+  for_each_effect([&]<class E>() {
+    if constexpr (requires { E::couple(view(E::spec.effect), t); }) {
+      if (!L.has(E::spec.effect)) return;
+      t.slice = L.of(E::spec.effect);
+      E::couple(view(E::spec.effect), t);
     }
-  }
-  if (L.has(Effect::GyroMisalign)) {
-    for (Eigen::Index k = 0; k < 6; ++k) {
-      const auto [i, j] = kOffDiagonal[static_cast<std::size_t>(k)];
-      Phi.block(A, L.of(Effect::GyroMisalign).start + k, 3, 1) -= C.col(i) * (in.angular_rate_b_rad_s(j) * dt);
+  });
+  for_each_effect([&]<class E>() {
+    if constexpr (requires { E::couple_last(view(E::spec.effect), t); }) {
+      if (!L.has(E::spec.effect)) return;
+      t.slice = L.of(E::spec.effect);
+      E::couple_last(view(E::spec.effect), t);
     }
-  }
-  if (L.has(Effect::GyroGSensitivity)) {
-    for (Eigen::Index i = 0; i < 3; ++i)
-      for (Eigen::Index j = 0; j < 3; ++j)
-        Phi.block(A, L.of(Effect::GyroGSensitivity).start + 3 * i + j, 3, 1) -=
-            C.col(i) * (in.specific_force_b_m_s2(j) * dt);
-  }
-  if (L.has(Effect::MagEarthField)) {  // e = dF + [F x] phi moves with phi: e_k+1 = e_k + [F x] (phi_k+1 - phi_k)
-    const Eigen::Index M = L.of(Effect::MagEarthField).start;
-    Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxStates> dphi = Phi.middleRows(A, 3);
-    dphi.middleCols(A, 3) -= Eigen::Matrix3d::Identity();
-    Phi.middleRows(M, 3) += skew(mag_field_n_) * dphi;
-  }
+  });
 
   // White noise: the model's, or what the data show when that is more (vibration).
   const double na = std::max(noise_.accel_white_m_s2_rthz, in.accel_white_floor_m_s2_rthz);
@@ -152,20 +201,15 @@ void ErrorStateFilter::build_transition(const PredictInput& in, int ar_steps, St
     const Slice& sl = L.effect[i];
     for (Eigen::Index j = 0; j < sl.size; ++j) q(sl.start + j) = tuning_.random_walk[i] * tuning_.random_walk[i] * dt;
   }
-  auto bias_walk = [&](Effect e, double walk) {
-    if (!L.has(e) || !(walk > 0.0)) return;
-    q.segment(L.of(e).start, 3).setConstant(walk * walk * dt);
-  };
-  bias_walk(Effect::AccelBias, noise_.accel_bias_walk);
-  bias_walk(Effect::GyroBias, noise_.gyro_bias_walk);
-  if (L.has(Effect::GpsPositionBias)) {  // first-order GM per NED axis
-    const Eigen::Index b = L.of(Effect::GpsPositionBias).start;
-    const double phi = std::exp(-dt / tuning_.gps_bias_tau_s);
-    for (Eigen::Index j = 0; j < 3; ++j) {
-      Phi(b + j, b + j) = phi;
-      q(b + j) = gps_bias_sigma_ned_m_(j) * gps_bias_sigma_ned_m_(j) * (1.0 - phi * phi);
+  // Effects with dynamics of their own (a walk from the sensor model, a GM process).
+  NoiseTerms nt{noise_, tuning_, gps_bias_sigma_ned_m_, dt, Phi, q, {}};
+  for_each_effect([&]<class E>() {
+    if constexpr (requires { E::process_noise(view(E::spec.effect), nt); }) {
+      if (!L.has(E::spec.effect)) return;
+      nt.slice = L.of(E::spec.effect);
+      E::process_noise(view(E::spec.effect), nt);
     }
-  }
+  });
 }
 
 void ErrorStateFilter::predict(const PredictInput& in) {
@@ -192,19 +236,18 @@ void ErrorStateFilter::predict(const PredictInput& in) {
   const Eigen::Index S = layout_.sensor.start;
   const Eigen::Index m = layout_.sensor.size;
   sensor_hat_ = (Phi.block(S, S, m, m) * sensor_hat_).eval();
-  if (layout_.has(Effect::GpsPositionBias)) gps_bias_ned_ *= std::exp(-in.dt_s / tuning_.gps_bias_tau_s);
-}
-
-Eigen::Matrix3d ErrorStateFilter::mag_soft_iron() const {
-  const auto& d = mag_soft_iron_;
-  Eigen::Matrix3d S;
-  S << 1.0 + d(0), d(3), d(4), d(3), 1.0 + d(1), d(5), d(4), d(5), 1.0 + d(2);
-  return S;
+  const MeanTerms mt{tuning_, in.dt_s};
+  for_each_effect([&]<class E>() {
+    if constexpr (requires(double* v) { E::predict_mean(v, mt); }) {
+      if (layout_.has(E::spec.effect)) E::predict_mean(values(E::spec.effect), mt);
+    }
+  });
 }
 
 void ErrorStateFilter::start_mag_field(const NavState& nav, const Eigen::Vector3d& mag_b_uT, double noise_sigma_uT) {
   const Eigen::Matrix3d C = nav.C_nb();
-  mag_field_n_ = C * mag_soft_iron().inverse() * (mag_b_uT - mag_hard_iron_b_);
+  const Eigen::Vector3d F_n = C * mag_soft_iron().inverse() * (mag_b_uT - mag_hard_iron_b_uT());
+  for (Eigen::Index i = 0; i < 3; ++i) set_effect(Effect::MagEarthField, i, F_n(i));
   if (!layout_.has(Effect::MagEarthField)) return;
   // F = C (m - h - n) and F_hat = C_hat (m - h_hat), C_hat = (I - [phi x]) C, so with
   // dh = h - h_hat: dF = -[F x] phi - C dh - C n, and the invariant error
@@ -236,38 +279,45 @@ void ErrorStateFilter::feedback(StateVec& dx, NavState& nav) {
   nav.v_n_m_s -= dx.segment(L.vel.start, 3);
   nav.q_nb = (quat_from_rotation_vector(dx.segment(L.att.start, 3)) * nav.q_nb).normalized();
   sensor_hat_ += dx.segment(L.sensor.start, L.sensor.size);
-  for (std::size_t k = 0; k < kEffectCount; ++k) {
-    const auto e = static_cast<Effect>(k);
-    if (!L.has(e) || e == Effect::MagEarthField) continue;
-    for (Eigen::Index i = 0; i < L.of(e).size; ++i) effect_slot(*this, e, i) += dx(L.of(e).start + i);
-  }
-  if (L.has(Effect::MagEarthField)) {
-    // e = dF + [F x] phi: the field turns with the attitude correction (exactly,
-    // as the attitude does), and so does its error, a navigation-frame vector
-    // (the reset Jacobian: without it a large heading correction leaves the
-    // field's covariance pointing the old way and the next turns diverge).
-    const Eigen::Vector3d phi = dx.segment(L.att.start, 3);
-    const Eigen::Matrix3d R = quat_from_rotation_vector(phi).toRotationMatrix();
-    mag_field_n_ = R * mag_field_n_ + dx.segment(L.of(Effect::MagEarthField).start, 3);
-    rotate_block(L.of(Effect::MagEarthField), R);
-  }
+  FeedbackTerms t{*this, dx, L.att, {}};
+  for_each_effect([&]<class E>() {
+    if (!L.has(E::spec.effect)) return;
+    double* v = values(E::spec.effect);
+    t.slice = L.of(E::spec.effect);
+    if constexpr (requires { E::feedback(v, t); }) {
+      E::feedback(v, t);
+    } else {
+      for (Eigen::Index i = 0; i < t.slice.size; ++i) v[i] += dx(t.slice.start + i);
+    }
+  });
   dx.setZero();
 }
 
 BodyRates ErrorStateFilter::compensate(const ImuSample& raw) const {
-  const double dT = raw.has_temp ? raw.temp_degC - temp_ref_degC_ : 0.0;
-  Eigen::Vector3d ba, bg;
+  ImuSignals sig;
+  sig.dT = raw.has_temp ? raw.temp_degC - temp_ref_degC_ : 0.0;
   for (Eigen::Index i = 0; i < 3; ++i) {
-    ba(i) = sensor_hat_(hat_index(sensor_axis::kFirstAccel + i)) + accel_bias_(i);
-    bg(i) = sensor_hat_(hat_index(sensor_axis::kFirstGyro + i)) + gyro_bias_(i);
+    sig.accel_offset(i) = sensor_hat_(hat_index(sensor_axis::kFirstAccel + i));
+    sig.gyro_offset(i) = sensor_hat_(hat_index(sensor_axis::kFirstGyro + i));
   }
+  // Every effect with an IMU correction, stage by stage (effect_spec.hpp's ImuStage):
+  // values of effects without states are zero, the nominal sensor.
+  const auto stage = [&](ImuStage which) {
+    for_each_effect([&]<class E>() {
+      if constexpr (requires { E::stage; }) {
+        if (E::stage == which) E::correct(view(E::spec.effect), sig);
+      }
+    });
+  };
+  stage(ImuStage::Offset);
+  sig.accel = raw.specific_force_b_m_s2 - sig.accel_offset - sig.accel_temp_offset;
+  sig.gyro = raw.angular_rate_b_rad_s - sig.gyro_offset - sig.gyro_temp_offset;
+  stage(ImuStage::Scale);
+  stage(ImuStage::CrossAxis);
+  stage(ImuStage::Coupling);
   BodyRates out;
-  const Eigen::Vector3d f =
-      (Eigen::Vector3d::Ones() - accel_scale_).cwiseProduct(raw.specific_force_b_m_s2 - ba - accel_temp_ * dT);
-  const Eigen::Vector3d w =
-      (Eigen::Vector3d::Ones() - gyro_scale_).cwiseProduct(raw.angular_rate_b_rad_s - bg - gyro_temp_ * dT);
-  out.specific_force_b_m_s2 = f - accel_misalign_ * f;
-  out.angular_rate_b_rad_s = w - gyro_misalign_ * w - gyro_g_ * out.specific_force_b_m_s2;
+  out.specific_force_b_m_s2 = sig.accel;
+  out.angular_rate_b_rad_s = sig.gyro;
   return out;
 }
 
@@ -297,20 +347,13 @@ void ErrorStateFilter::seed_position_from_fix(const Eigen::Vector3d& fix_sigma_n
 void ErrorStateFilter::add_axis_states(Eigen::Index axis, StateMask& mask) const {
   const StateLayout& L = layout_;
   for (Eigen::Index j = 0; j < L.order; ++j) mask.set(static_cast<std::size_t>(L.sensor_state(axis) + j));
-  const bool accel = axis < sensor_axis::kFirstGyro;
+  const Triad triad = axis < sensor_axis::kFirstGyro ? Triad::Accel : Triad::Gyro;
   const Eigen::Index i = axis % 3;
-  for (const Effect e : accel ? std::array{Effect::AccelBias, Effect::AccelScale, Effect::AccelTempBias}
-                              : std::array{Effect::GyroBias, Effect::GyroScale, Effect::GyroTempBias}) {
-    if (L.has(e)) mask.set(static_cast<std::size_t>(L.of(e).start + i));
-  }
-  // The axis's row of its misalignment (and of the g-sensitivity for a gyro).
-  const Effect misalign = accel ? Effect::AccelMisalign : Effect::GyroMisalign;
-  if (L.has(misalign)) {
-    for (Eigen::Index k = 0; k < 6; ++k)
-      if (kOffDiagonal[static_cast<std::size_t>(k)][0] == i) mask.set(static_cast<std::size_t>(L.of(misalign).start + k));
-  }
-  if (!accel && L.has(Effect::GyroGSensitivity)) {
-    for (Eigen::Index j = 0; j < 3; ++j) mask.set(static_cast<std::size_t>(L.of(Effect::GyroGSensitivity).start + 3 * i + j));
+  for (const EffectSpec& e : kEffects) {
+    if (e.triad != triad || !L.has(e.effect)) continue;
+    const Slice& s = L.of(e.effect);
+    for (Eigen::Index k = 0; k < s.size; ++k)
+      if (effect_component_axis(e.components, k) == i) mask.set(static_cast<std::size_t>(s.start + k));
   }
 }
 
@@ -333,7 +376,7 @@ void ErrorStateFilter::add_block_noise(const Slice& block, const Eigen::Matrix3d
 void ErrorStateFilter::add_field_coupled_noise(const Eigen::Matrix3d& Q_att, bool attitude_block_too) {
   const Eigen::Index A = layout_.att.start, M = layout_.of(Effect::MagEarthField).start;
   const Eigen::Matrix3d Q = 0.5 * (Q_att + Q_att.transpose());
-  const Eigen::Matrix3d Fx = skew(mag_field_n_);
+  const Eigen::Matrix3d Fx = skew(mag_earth_field_n_uT());
   if (attitude_block_too) P_.block(A, A, 3, 3) += Q;
   P_.block(M, M, 3, 3) += Fx * Q * Fx.transpose();
   P_.block(M, A, 3, 3) += Fx * Q;
@@ -350,7 +393,8 @@ void ErrorStateFilter::reset_yaw(NavState& nav, double dyaw_rad, double sigma_ra
   const Eigen::Quaterniond turn(Eigen::AngleAxisd(dyaw_rad, Eigen::Vector3d::UnitZ()));
   nav.q_nb = (turn * nav.q_nb).normalized();
   // The field turns with the solution: the invariant field error (state_layout.hpp) is unchanged.
-  mag_field_n_ = turn * mag_field_n_;
+  const Eigen::Vector3d F_n = turn * mag_earth_field_n_uT();
+  for (Eigen::Index i = 0; i < 3; ++i) set_effect(Effect::MagEarthField, i, F_n(i));
   if (layout_.has(Effect::MagEarthField)) rotate_block(layout_.of(Effect::MagEarthField), turn.toRotationMatrix());
   const Eigen::Index d = layout_.att.start + 2;
   P_.row(d).setZero();
@@ -368,7 +412,9 @@ void ErrorStateFilter::seed_accel_bias_at_rest(const NavState& nav, const Eigen:
   const Slice& B = layout_.of(Effect::AccelBias);
   const Eigen::Vector3d u = f_b.normalized();  // "up" in the body frame
   // The along-gravity part is measured; the rest keeps its prior.
-  accel_bias_ = accel_bias_ - u * u.dot(accel_bias_) + u * (f_b.norm() - g);
+  const Eigen::Vector3d b0 = view(Effect::AccelBias).vec3();
+  const Eigen::Vector3d b = b0 - u * u.dot(b0) + u * (f_b.norm() - g);
+  for (Eigen::Index i = 0; i < 3; ++i) set_effect(Effect::AccelBias, i, b(i));
   const Eigen::Matrix3d Pb_prior = P_.block(B.start, B.start, 3, 3);
   const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - u * u.transpose();
   double coloured = 0.0;  // the coloured error at rest is in the mean too (as for the gyro)
@@ -397,7 +443,7 @@ double ErrorStateFilter::sensor_error(Eigen::Index axis) const { return sensor_h
 
 void ErrorStateFilter::seed_gyro_bias(const Eigen::Vector3d& bias, double sigma) {
   if (layout_.has(Effect::GyroBias)) {
-    gyro_bias_ = bias;
+    for (Eigen::Index i = 0; i < 3; ++i) set_effect(Effect::GyroBias, i, bias(i));
     const Eigen::Index s = layout_.of(Effect::GyroBias).start;
     for (Eigen::Index i = 0; i < 3; ++i) {
       // The window's mean also holds the coloured error of that moment, which
@@ -424,9 +470,9 @@ double ErrorStateFilter::sensor_error_sigma(Eigen::Index axis) const {
   return std::sqrt(P_(s, s));
 }
 
-double ErrorStateFilter::effect(Effect e, Eigen::Index i) const { return effect_slot(*this, e, i); }
+double ErrorStateFilter::effect(Effect e, Eigen::Index i) const { return view(e).v[i]; }
 
-void ErrorStateFilter::set_effect(Effect e, Eigen::Index i, double v) { effect_slot(*this, e, i) = v; }
+void ErrorStateFilter::set_effect(Effect e, Eigen::Index i, double v) { values(e)[i] = v; }
 
 void ErrorStateFilter::apply_priors() {
   for (std::size_t e = 0; e < kEffectCount; ++e) apply_prior(static_cast<Effect>(e));

@@ -67,9 +67,11 @@ class ErrorStateFilter {
   /// their values and sigmas (after set_lever_arm / set_gps_latency, which they override).
   void apply_priors();
   double effect_sigma(Effect e, Eigen::Index i) const;
-  Eigen::Vector3d lever_arm_b_m() const { return lever_arm_b_; }
-  double gps_latency_s() const { return latency_s_; }
-  Eigen::Vector3d gps_position_bias_ned_m() const { return gps_bias_ned_; }
+  /// An effect's values (states or configured), read through its components.
+  EffectView view(Effect e) const { return {value_.data() + kEffectValueOffset[static_cast<std::size_t>(e)]}; }
+  Eigen::Vector3d lever_arm_b_m() const { return view(Effect::LeverArm).vec3(); }
+  double gps_latency_s() const { return view(Effect::GpsLatency).scalar(); }
+  Eigen::Vector3d gps_position_bias_ned_m() const { return view(Effect::GpsPositionBias).vec3(); }
   /// The GM sigma of the receiver's correlated error, per NED axis.
   Eigen::Vector3d gps_bias_sigma_ned_m() const { return gps_bias_sigma_ned_m_; }
   /// Sets the correlated error's level from a fix's stated sigma (its
@@ -80,10 +82,10 @@ class ErrorStateFilter {
   /// correlated part with the GPS-bias states (else the next fixes would count
   /// that error twice).
   void seed_position_from_fix(const Eigen::Vector3d& fix_sigma_ned_m);
-  Eigen::Vector3d mag_earth_field_n_uT() const { return mag_field_n_; }
-  Eigen::Vector3d mag_hard_iron_b_uT() const { return mag_hard_iron_b_; }
+  Eigen::Vector3d mag_earth_field_n_uT() const { return view(Effect::MagEarthField).vec3(); }
+  Eigen::Vector3d mag_hard_iron_b_uT() const { return view(Effect::MagHardIron).vec3(); }
   /// Soft-iron matrix I + D (identity without the mag_soft_iron states).
-  Eigen::Matrix3d mag_soft_iron() const;
+  Eigen::Matrix3d mag_soft_iron() const { return view(Effect::MagSoftIron).identity_plus_symmetric(); }
   const EffectTuning& tuning() const { return tuning_; }
 
   /// The hard iron set to what the field sample says with the current
@@ -126,37 +128,17 @@ class ErrorStateFilter {
   /// the gyro_bias states when active, else into the sensor-error states
   /// (all lags of an AR block get the same value).
   void seed_gyro_bias(const Eigen::Vector3d& bias_rad_s, double sigma_rad_s);
-  void set_lever_arm(const Eigen::Vector3d& l) { lever_arm_b_ = l; }
-  void set_gps_latency(double s) { latency_s_ = s; }
+  void set_lever_arm(const Eigen::Vector3d& l) {
+    for (Eigen::Index i = 0; i < 3; ++i) set_effect(Effect::LeverArm, i, l(i));
+  }
+  void set_gps_latency(double s) { set_effect(Effect::GpsLatency, 0, s); }
   void set_reference_temperature(double t) { temp_ref_degC_ = t; }
   double reference_temperature() const { return temp_ref_degC_; }
 
  private:
   void apply_prior(Effect e);
-  /// The estimate of effect component i, for reading (const filter) or writing:
-  /// the one map from (effect, component) to the member that holds it.
-  template <typename Self>
-  static auto& effect_slot(Self& f, Effect e, Eigen::Index i) {
-    const auto& off = kOffDiagonal[static_cast<std::size_t>(i % 6)];
-    switch (e) {
-      case Effect::AccelScale: return f.accel_scale_(i);
-      case Effect::GyroScale: return f.gyro_scale_(i);
-      case Effect::LeverArm: return f.lever_arm_b_(i);
-      case Effect::GpsLatency: return f.latency_s_;
-      case Effect::AccelTempBias: return f.accel_temp_(i);
-      case Effect::GyroTempBias: return f.gyro_temp_(i);
-      case Effect::AccelBias: return f.accel_bias_(i);
-      case Effect::GyroBias: return f.gyro_bias_(i);
-      case Effect::GpsPositionBias: return f.gps_bias_ned_(i);
-      case Effect::MagEarthField: return f.mag_field_n_(i);
-      case Effect::MagHardIron: return f.mag_hard_iron_b_(i);
-      case Effect::MagSoftIron: return f.mag_soft_iron_(i);
-      case Effect::AccelMisalign: return f.accel_misalign_(off[0], off[1]);
-      case Effect::GyroMisalign: return f.gyro_misalign_(off[0], off[1]);
-      case Effect::GyroGSensitivity: break;
-    }
-    return f.gyro_g_(i / 3, i % 3);
-  }
+  double* values(Effect e) { return value_.data() + kEffectValueOffset[static_cast<std::size_t>(e)]; }
+  struct FeedbackTerms;  // what an effect's feedback may use (error_state_filter.cpp)
   Eigen::Index hat_index(Eigen::Index axis) const { return axis * layout_.order; }
   /// P <- G P G^T for a 3-state block: a reset Jacobian.
   void rotate_block(const Slice& block, const Eigen::Matrix3d& G);
@@ -170,18 +152,10 @@ class ErrorStateFilter {
   StateVec sensor_hat_;  // mean of the sensor-error states (size sensor.size)
   std::array<AxisBlock, kSensorAxes> ar_step_{};  // companion matrices
   double ar_clock_s_ = 0.0;
-  Eigen::Vector3d accel_scale_ = Eigen::Vector3d::Zero(), gyro_scale_ = Eigen::Vector3d::Zero();
-  Eigen::Vector3d accel_temp_ = Eigen::Vector3d::Zero(), gyro_temp_ = Eigen::Vector3d::Zero();
-  Eigen::Vector3d accel_bias_ = Eigen::Vector3d::Zero(), gyro_bias_ = Eigen::Vector3d::Zero();
-  Eigen::Vector3d lever_arm_b_ = Eigen::Vector3d::Zero();
-  // Off-diagonal misalignments (diagonal stays 0) and the gyro's g-sensitivity.
-  Eigen::Matrix3d accel_misalign_ = Eigen::Matrix3d::Zero(), gyro_misalign_ = Eigen::Matrix3d::Zero();
-  Eigen::Matrix3d gyro_g_ = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d gps_bias_ned_ = Eigen::Vector3d::Zero();
+  // Every effect's values, states or configured (lever arm, latency), in the
+  // effects' own components (effects/*.hpp); zero is the nominal sensor.
+  std::array<double, kMaxEffectStates> value_{};
   Eigen::Vector3d gps_bias_sigma_ned_m_ = Eigen::Vector3d::Ones();
-  Eigen::Vector3d mag_field_n_ = Eigen::Vector3d::Zero(), mag_hard_iron_b_ = Eigen::Vector3d::Zero();
-  Eigen::Matrix<double, 6, 1> mag_soft_iron_ = Eigen::Matrix<double, 6, 1>::Zero();  // D xx yy zz xy xz yz
-  double latency_s_ = 0.0;
   double temp_ref_degC_ = 0.0;
 };
 

@@ -88,18 +88,17 @@ double best_phase_nis(const InnovationStats& st, std::size_t k) {
 }  // namespace
 
 std::string untestable_reason(est::Effect effect, const replay::Excitation& x) {
-  switch (effect) {
-    case est::Effect::AccelTempBias:
-    case est::Effect::GyroTempBias:
+  switch (est::spec(effect).needs) {
+    case est::Needs::Temperature:
       if (x.temp_samples == 0) return "no temperature in imu.csv: a temperature coefficient cannot be told from the bias";
       if (x.temp_span_degC() < 2.0)
         return fmt::format("the temperature spans only {:.1f} degC (at least 2 degC separates a coefficient from the "
                            "bias; a warm-up on the bench does)", x.temp_span_degC());
       return "";
-    case est::Effect::MagSoftIron:
-      return x.mag_samples == 0 ? "no magnetometer samples" : "";
-    default: return "";
+    case est::Needs::Magnetometer: return x.mag_samples == 0 ? "no magnetometer samples" : "";
+    case est::Needs::Nothing: return "";
   }
+  return "";
 }
 
 void observability_notes(const CandidateResult& c, const replay::Excitation& x, std::vector<std::string>& out) {
@@ -112,14 +111,13 @@ void observability_notes(const CandidateResult& c, const replay::Excitation& x, 
                                                            : "");
     std::string note = fmt::format("{}: the flight left {:.0f} % of its prior sigma (weakly observable here)", what,
                                    100.0 * c.sigma_ratio[i]);
-    // What the effect needs: a scale the axis's own range, a misalignment or a
-    // g-sensitivity the other axis's.
+    // What the effect needs (effects/*.hpp excited_by): a scale the axis's own
+    // range, a misalignment or a g-sensitivity the other axis's (the column).
     Eigen::Index driver = k;
     if (spec.components == est::Components::OffDiagonal) driver = est::kOffDiagonal[i][1];
     if (spec.components == est::Components::Matrix) driver = k % 3;
-    const bool accel_driven = c.effect == est::Effect::AccelScale || c.effect == est::Effect::AccelMisalign ||
-                              c.effect == est::Effect::GyroGSensitivity;
-    const bool gyro_driven = c.effect == est::Effect::GyroScale || c.effect == est::Effect::GyroMisalign;
+    const bool accel_driven = spec.excited_by == est::Triad::Accel;
+    const bool gyro_driven = spec.excited_by == est::Triad::Gyro;
     if (accel_driven && driver < 3) {
       const double lo = x.f_min_m_s2(driver), hi = x.f_max_m_s2(driver);
       note += fmt::format("; specific force {} stayed within {:.1f}..{:.1f} m/s^2 (a span of {:.2f} g): a pull-up, a "

@@ -1,0 +1,17 @@
+#pragma once
+// The magnetometer's hard iron, body [uT]: a nearby motor or battery,
+// m = S C_bn F + h. Tens of uT; re-anchored when the vehicle's own field changes
+// (the navigator), always carried with the magnetometer.
+#include "estimator/ekf/effects/effect_spec.hpp"
+
+namespace sinu::est::effects {
+
+struct MagHardIron {
+  static constexpr EffectSpec spec{Effect::MagHardIron, "mag_hard_iron", Components::Xyz, "uT", 1.0, 30.0, 1e-2, false,
+                                   500.0};
+  template <class T> static void magnetometer(EffectView, T& t) {
+    if (t.slice.active()) t.H.block(0, t.slice.start, 3, 3) = -Eigen::Matrix3d::Identity();
+  }
+};
+
+}  // namespace sinu::est::effects
