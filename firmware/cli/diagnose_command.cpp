@@ -11,6 +11,7 @@
 #include "firmware/cli/navigation_options.hpp"
 #include "firmware/host/diagnose/diagnose_runner.hpp"
 #include "firmware/host/diagnose/diagnosis_report.hpp"
+#include "firmware/host/replay/replay_options.hpp"
 
 namespace sinu::cli {
 
@@ -34,11 +35,13 @@ struct DiagnoseCliOptions {
   bool quiet = false;
   bool apply = false;
   std::string candidates = default_candidates();
+  std::string outages;
 };
 
 int run(DiagnoseCliOptions& c) {
   std::string error;
-  if (!c.nav.resolve(error) || !board::parse_effects(c.candidates, c.opt.candidates, error)) {
+  if (!c.nav.resolve(error) || !board::parse_effects(c.candidates, c.opt.candidates, error) ||
+      !replay::parse_outages(c.outages, c.nav.opt.outages, error)) {
     std::fprintf(stderr, "sinu diagnose: %s\n", error.c_str());
     return kExitUsage;
   }
@@ -68,6 +71,9 @@ void add_diagnose_command(CLI::App& app, Action& action) {
   sub->add_option("--out", c->opt.out_dir,
                   "Output folder: report.md, report.html, diagnosis.json and the baseline replay (baseline/)")
       ->required();
+  sub->add_option("--outage", c->outages,
+                  "GPS outages START:DURATION[,...] in the dataset's t [s], as in replay: every run (baseline, "
+                  "candidates, final) has them, and the drift in them is shown before and after (needs truth.csv)");
   sub->add_option("--threads", c->opt.threads, "Candidate replays at once (0: one per core)")->capture_default_str();
   sub->add_flag("--quiet", c->quiet, "No progress lines on stderr");
   sub->add_flag("--apply", c->apply,

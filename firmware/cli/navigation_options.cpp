@@ -43,8 +43,8 @@ void NavigationCliOptions::add_to(CLI::App& sub) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   sub.add_option("--mag-declination", opt.unit.mag_declination_deg,
-                 "Site's magnetic declination [deg, east +]: align heading with the magnetometer at rest "
-                 "(default: from the GNSS course once moving)");
+                 "Site's magnetic declination [deg, east +] for the heading from the magnetometer (default: the World "
+                 "Magnetic Model's at the first fix, when the measured field is the Earth's; else from GNSS motion)");
   sub.add_option("--vehicle", vehicle,
                  "What carries the unit: auto (default: an aircraft until the solution's body-frame velocity shows "
                  "a ground vehicle: no sideways or vertical velocity), air (UAV), or ground (a car: the "

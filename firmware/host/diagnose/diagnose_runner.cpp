@@ -85,6 +85,18 @@ double best_phase_nis(const InnovationStats& st, std::size_t k) {
   return best;
 }
 
+/// The baseline's and the final model's drift in the --outage windows (two more replays).
+bool outage_drifts(replay::ReplayOptions opt, const std::vector<replay::Outage>& outages, Diagnosis& d,
+                   std::string& error) {
+  opt.outages = outages;
+  for (Round* r : {&d.rounds.front(), &d.rounds.back()}) {
+    RunScore s;
+    if (!replay_and_score(opt, r->model, "", false, s, error)) return false;
+    r->outage_drift_h_m = s.outage_drift_h_m;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::string untestable_reason(est::Effect effect, const replay::Excitation& x) {
@@ -159,8 +171,13 @@ std::vector<std::string> noise_findings(const InnovationStats& st, bool effect_f
   return out;
 }
 
-bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error) {
+bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& error) {
   namespace fs = std::filesystem;
+  // The candidates are judged on all the data (an outage's re-convergence
+  // would be a misfit to explain); --outage windows are for the drift of the
+  // model before and after (outage_drifts below).
+  DiagnoseOptions o = given;
+  o.replay.outages.clear();
   out = {};
   std::error_code ec;
   fs::create_directories(o.out_dir, ec);
@@ -330,6 +347,7 @@ bool run_diagnosis(const DiagnoseOptions& o, Diagnosis& out, std::string& error)
   last.rmse_att_deg = current.rmse_att_deg;
   last.outage_drift_h_m = current.outage_drift_h_m;
   if (out.rounds.empty() || out.rounds.back().found) out.rounds.push_back(last);
+  if (!given.replay.outages.empty() && !outage_drifts(tuned.replay, given.replay.outages, out, error)) return false;
   if (!o.apply_path.empty()) {
     // The final model's effects beyond the defaults, with the final run's
     // estimates: the next flight (replay, diagnose, fly) starts from them.

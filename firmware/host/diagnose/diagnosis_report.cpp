@@ -125,8 +125,10 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
           "vibration rectification, a receiver whose error changes with the satellites in view.\n";
   }
   if (!d.rounds.empty()) {
-    j["before"] = {{"rmse_pos_h_m", d.rounds.front().rmse_pos_h_m}, {"nll", d.rounds.front().stats.total_nll()}};
+    j["before"] = {{"rmse_pos_h_m", d.rounds.front().rmse_pos_h_m}, {"nll", d.rounds.front().stats.total_nll()},
+                   {"outage_drift_h_m", d.rounds.front().outage_drift_h_m}};
     j["after"] = {{"rmse_pos_h_m", d.rounds.back().rmse_pos_h_m}, {"nll", d.rounds.back().stats.total_nll()},
+                  {"outage_drift_h_m", d.rounds.back().outage_drift_h_m},
                   {"effects", effect_list(d.rounds.back().model)}};
   }
   std::ofstream js(o.out_dir + "/diagnosis.json");

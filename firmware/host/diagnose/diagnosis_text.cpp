@@ -7,9 +7,14 @@ namespace sinu::diagnose {
 namespace {
 
 // The model's error in one run: RMSE against truth and NIS per source.
+/// ", outage drift X m" when --outage windows were scored, else "".
+std::string drift_text(const Round& r) {
+  return r.outage_drift_h_m >= 0.0 ? ", outage drift " + rmse_text(r.outage_drift_h_m, "m") : "";
+}
+
 std::string error_text(const Round& r) {
   std::string out = "horizontal RMSE " + rmse_text(r.rmse_pos_h_m, "m") + ", attitude " + rmse_text(r.rmse_att_deg, "deg") +
-                    "; NIS per component";
+                    drift_text(r) + "; NIS per component";
   for (std::size_t k = 0; k < kSources; ++k) {
     if (r.stats.source[k].count) out += std::string(" ") + kSourceNames[k] + " " + nis_cell(r.stats.source[k]);
   }
@@ -141,7 +146,10 @@ std::vector<std::string> implausible_fits(const Diagnosis& d, double min_signifi
 std::string before_after_text(const Round& before, const Round& after) {
   std::string out = "horizontal RMSE " + rmse_text(before.rmse_pos_h_m, "m") + " -> " +
                     rmse_text(after.rmse_pos_h_m, "m") + ", attitude " + rmse_text(before.rmse_att_deg, "deg") + " -> " +
-                    rmse_text(after.rmse_att_deg, "deg") + "; NIS per component";
+                    rmse_text(after.rmse_att_deg, "deg");
+  if (before.outage_drift_h_m >= 0.0)
+    out += ", outage drift " + rmse_text(before.outage_drift_h_m, "m") + " -> " + rmse_text(after.outage_drift_h_m, "m");
+  out += "; NIS per component";
   for (std::size_t k = 0; k < kSources; ++k) {
     if (!before.stats.source[k].count) continue;
     out += std::string(" ") + kSourceNames[k] + " " + nis_cell(before.stats.source[k]) + " -> " +
