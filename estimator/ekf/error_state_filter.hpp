@@ -87,6 +87,7 @@ class ErrorStateFilter {
   /// Soft-iron matrix I + D (identity without the mag_soft_iron states).
   Eigen::Matrix3d mag_soft_iron() const { return view(Effect::MagSoftIron).identity_plus_symmetric(); }
   const EffectTuning& tuning() const { return tuning_; }
+  const SensorNoise& noise() const { return noise_; }
 
   /// The hard iron set to what the field sample says with the current
   /// attitude and Earth field: h = m - S C_bn F, sigma `sigma_uT`, its

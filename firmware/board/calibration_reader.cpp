@@ -105,6 +105,21 @@ bool load_calib(const std::string& path, const CalibChoice& choice, est::SensorN
     }
   }
   noise.ar_sample_period_s = 1.0 / rate;
+  // The AR models at the rate their Allan deviation fits best (sinu calibrate's
+  // ar_model_rate, issue 14): stepped every k-th IMU sample by the EKF.
+  bool use_model_rate = false;
+  if (choice.kind == est::NoiseModelKind::AutoRegressive && choice.ar_rate == "model" && j.contains("ar_model_rate") &&
+      j["ar_model_rate"].is_object()) {
+    double model_rate = 0.0;
+    if (!number_at(j["ar_model_rate"], "rate_hz", model_rate) || !(model_rate > 0.0))
+      return fail("ar_model_rate.rate_hz", "missing or not positive");
+    if (!j["ar_model_rate"].contains("axes") || !j["ar_model_rate"]["axes"].is_object())
+      return fail("ar_model_rate.axes", "missing");
+    noise.ar_sample_period_s = 1.0 / model_rate;
+    use_model_rate = true;
+  } else if (choice.ar_rate != "model" && choice.ar_rate != "imu") {
+    return fail("ar rate", "must be model or imu, not '" + choice.ar_rate + "'");
+  }
   if (choice.kind == est::NoiseModelKind::AutoRegressive &&
       (choice.ar_order < 1 || choice.ar_order > static_cast<int>(est::kMaxArOrder))) {
     return fail("ar order", "must be 1.." + std::to_string(est::kMaxArOrder) + " (the EKF's compile-time maximum)");
@@ -122,11 +137,15 @@ bool load_calib(const std::string& path, const CalibChoice& choice, est::SensorN
       if (!number_at(axis["gm"], "variance", var) || !(var >= 0.0)) return fail(key + ".gm.variance", "missing or negative");
       noise.gm[i] = {tau, var};
     } else {
-      const std::string mkey = key + ".ar." + choice.ar_method;
-      if (!axis.contains("ar") || !axis["ar"].contains(choice.ar_method) || !axis["ar"][choice.ar_method].is_array()) {
+      // The AR at the model rate when calib.json chose one and the user did not ask for the IMU rate's.
+      const bool at_model_rate = use_model_rate;
+      const nlohmann::json& fits = at_model_rate ? j["ar_model_rate"]["axes"][kAxisNames[i]] : axis;
+      const std::string mkey = (at_model_rate ? "ar_model_rate.axes." + std::string(kAxisNames[i]) : key) + ".ar." +
+                               choice.ar_method;
+      if (!fits.contains("ar") || !fits["ar"].contains(choice.ar_method) || !fits["ar"][choice.ar_method].is_array()) {
         return fail(mkey, "missing");
       }
-      const nlohmann::json& models = axis["ar"][choice.ar_method];
+      const nlohmann::json& models = fits["ar"][choice.ar_method];
       const auto p = static_cast<std::size_t>(choice.ar_order);
       if (models.size() < p) return fail(mkey, "has no order " + std::to_string(p));
       const nlohmann::json& m = models[p - 1];

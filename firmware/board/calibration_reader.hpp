@@ -14,6 +14,8 @@ struct CalibChoice {
   est::NoiseModelKind kind = est::NoiseModelKind::AutoRegressive;
   std::string ar_method = "burg";
   int ar_order = 3;
+  // model: the AR fitted at the model rate calib.json chose (ar_model_rate), when it has one; imu: at the IMU rate.
+  std::string ar_rate = "model";
 };
 
 /// The denoiser the models were fitted after (calib.json "denoiser"): the

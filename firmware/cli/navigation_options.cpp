@@ -16,6 +16,10 @@ void NavigationCliOptions::add_to(CLI::App& sub) {
                  "calib.json from `sinu calibrate`; omitted: built-in defaults (README, 'sinu replay')");
   sub.add_option("--model", model, "Sensor-error model: gm (GM1, 15 states) or ar (AR(p), 9+6p states)")
       ->capture_default_str();
+  sub.add_option("--ar-rate", opt.unit.calib.ar_rate,
+                 "AR models in calib.json at: model (the rate sinu calibrate chose by the Allan deviation over 1-100 s, "
+                 "when it has one) or imu (fitted at the IMU rate)")
+      ->capture_default_str();
   sub.add_option("--ar-method", opt.unit.calib.ar_method, "AR estimator in calib.json: burg, yule_walker, covariance")
       ->capture_default_str();
   sub.add_option("--ar-order", opt.unit.calib.ar_order, "AR order p (1..4)")->capture_default_str();

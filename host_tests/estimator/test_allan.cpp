@@ -11,6 +11,7 @@
 
 #include "estimator/noise/allan_deviation.hpp"
 #include "estimator/noise/allan_noise_terms.hpp"
+#include "estimator/noise/model_allan.hpp"
 
 namespace {
 
@@ -108,6 +109,28 @@ TEST(AllanNoiseTerms, BiasInstabilityFromFlickerFloor) {
 TEST(AllanDeviation, TooShortSeriesGivesEmptyCurve) {
   EXPECT_TRUE(overlapping_allan(std::vector<double>(5, 1.0), 0.025).empty());
   EXPECT_FALSE(fit_allan_noise_terms(std::vector<AllanPoint>{}).valid);
+}
+
+// The Allan variance a model predicts, from its autocovariance, against the
+// closed forms: white noise sigma^2 / m; a first-order Gauss-Markov process
+// of variance q and correlation time T (continuous averaging, e.g. El-Sheimy,
+// Hou & Niu 2008): AVAR = q T^2 / tau^2 (2 tau / T - 3 + 4 e^-tau/T - e^-2tau/T).
+TEST(ModelAllan, WhiteNoiseAndGaussMarkovAgainstTheirClosedForms) {
+  std::vector<double> white(400, 0.0);
+  white[0] = 2.5;
+  for (const std::size_t m : {1u, 7u, 100u, 200u}) EXPECT_NEAR(allan_variance_of_autocovariance(white, m), 2.5 / static_cast<double>(m), 1e-12);
+  EXPECT_TRUE(std::isnan(allan_variance_of_autocovariance(white, 201)));  // needs lags up to 2m - 1
+
+  const double q = 0.04, T = 5.0, dt = 0.005;  // dt = T / 1000: the sums approach the integrals
+  std::vector<double> r(static_cast<std::size_t>(200.0 / dt) + 2);
+  for (std::size_t k = 0; k < r.size(); ++k) r[k] = q * std::exp(-static_cast<double>(k) * dt / T);
+  for (const double tau : {0.5, 2.0, 5.0, 20.0, 90.0}) {
+    const auto m = static_cast<std::size_t>(std::lround(tau / dt));
+    const double x = tau / T;
+    const double closed = q / (x * x) * (2.0 * x - 3.0 + 4.0 * std::exp(-x) - std::exp(-2.0 * x));
+    // The discrete sums differ from the continuous integrals by O(dt / T) = 0.1 %.
+    EXPECT_NEAR(allan_variance_of_autocovariance(r, m), closed, 5e-3 * closed) << "tau " << tau;
+  }
 }
 
 }  // namespace

@@ -69,6 +69,32 @@ json axis_json(const AxisCalibration& a, double dt) {
   return j;
 }
 
+/// The AR models at the chosen model rate, the scores of every candidate rate,
+/// and per axis the Allan deviation measured and predicted (model_rate.hpp).
+json model_rate_json(const ModelRate& r) {
+  json j;
+  j["rate_hz"] = r.rate_hz;
+  j["decimation"] = r.decimation;
+  j["criterion"] = "RMS of ln(ADEV of the model + white noise N / ADEV measured) over 1-100 s, all axes";
+  json scores = json::array();
+  for (const RateScore& c : r.candidates)
+    scores.push_back({{"rate_hz", c.rate_hz}, {"decimation", c.decimation}, {"score", number_or_null(c.score)}});
+  j["candidates"] = scores;
+  for (std::size_t i = 0; i < kImuAxes.size(); ++i) {
+    const AxisAtRate& a = r.axes[i];
+    json ax;
+    for (std::size_t m = 0; m < kArMethods; ++m) {
+      json list = json::array();
+      for (const auto& model : a.ar[m]) list.push_back(ar_json(model));
+      ax["ar"][kArMethodNames[m]] = list;
+    }
+    ax["adev"] = {{"tau_s", a.tau_s},         {"measured", a.adev_measured}, {"gm", a.adev_gm},
+                  {"ar_imu_rate", a.adev_ar_imu}, {"ar_model_rate", a.adev_ar_model}};
+    j["axes"][kImuAxes[i]] = ax;
+  }
+  return j;
+}
+
 json session_json(const SessionCalibration& s) {
   json j;
   j["dataset"] = s.dataset;
@@ -79,6 +105,7 @@ json session_json(const SessionCalibration& s) {
   j["gaps"] = s.gaps;
   const double dt = 1.0 / s.sample_rate_hz;
   for (const auto& a : s.axes) j["axes"][a.axis] = axis_json(a, dt);
+  if (s.model_rate.valid()) j["ar_model_rate"] = model_rate_json(s.model_rate);
   for (std::size_t i = 0; i < kMagAxes.size(); ++i) {
     j["magnetometer"][kMagAxes[i]] = {
         {"mean_uT", s.mag[i].mean_uT}, {"std_uT", s.mag[i].std_uT}, {"samples", s.mag[i].samples}};
@@ -101,6 +128,7 @@ nlohmann::json calibration_to_json(const CalibrationRun& run) {
   j["dataset"] = first.dataset;
   j["sample_rate_hz"] = first.sample_rate_hz;
   j["axes"] = s0["axes"];
+  if (s0.contains("ar_model_rate")) j["ar_model_rate"] = s0["ar_model_rate"];
   j["magnetometer"] = s0["magnetometer"];
   j["sessions"] = json::array();
   for (const auto& s : run.sessions) j["sessions"].push_back(session_json(s));

@@ -18,11 +18,13 @@ SessionCalibration calibrate_session(const StaticSession& session, const Denoise
   AxisOptions opt;
   opt.dt_s = session.dt_s;
   opt.model = model;
+  std::array<std::vector<double>, 6> denoised;
   for (std::size_t i = 0; i < kImuAxes.size(); ++i) {
-    const std::vector<double> denoised = denoiser.apply(session.imu[i], s.sample_rate_hz);
-    s.axes[i] = calibrate_axis(kImuAxes[i], session.imu[i], denoised, opt);
+    denoised[i] = denoiser.apply(session.imu[i], s.sample_rate_hz);
+    s.axes[i] = calibrate_axis(kImuAxes[i], session.imu[i], denoised[i], opt);
     if (on_axis_done) on_axis_done();
   }
+  s.model_rate = choose_model_rate(denoised, s.axes, session.dt_s, denoiser.levels);
   for (std::size_t i = 0; i < kMagAxes.size(); ++i) {
     double mean = 0.0;
     const std::vector<double> c = noise::remove_mean(session.mag[i], mean);

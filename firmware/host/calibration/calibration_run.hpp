@@ -8,6 +8,7 @@
 
 #include "firmware/host/calibration/axis_calibration.hpp"
 #include "firmware/host/calibration/denoiser.hpp"
+#include "firmware/host/calibration/model_rate.hpp"
 #include "firmware/host/calibration/static_session.hpp"
 
 namespace sinu::calibration {
@@ -23,6 +24,7 @@ struct SessionCalibration {
   double duration_s = 0.0;
   std::size_t rows = 0, rows_without_imu = 0, gaps = 0;
   std::array<AxisCalibration, 6> axes;
+  ModelRate model_rate;  // the AR models at the rate their Allan deviation fits best (model_rate.hpp)
   std::array<MagStatistics, 3> mag;
 };
 

@@ -72,7 +72,8 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
   json sj;
   sj["dataset"] = r.dataset;
   sj["model"] = calib.kind == est::NoiseModelKind::GaussMarkov ? "gm" : "ar";
-  if (calib.kind == est::NoiseModelKind::AutoRegressive) sj["ar"] = {{"method", calib.ar_method}, {"order", calib.ar_order}};
+  if (calib.kind == est::NoiseModelKind::AutoRegressive)
+    sj["ar"] = {{"method", calib.ar_method}, {"order", calib.ar_order}, {"rate_hz", r.ar_rate_hz}};
   sj["calib"] = opt.unit.calib_path.empty() ? json(nullptr) : json(opt.unit.calib_path);
   sj["states"] = r.states;
   sj["denoiser"] = r.denoiser;

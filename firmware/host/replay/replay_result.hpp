@@ -51,6 +51,7 @@ const char* health_status_name(HealthStatus s);  // ok, reset, lost_and_recovere
 struct ReplayResult {
   std::string dataset;
   std::string denoiser = "none";  // "db4:3" or "none"
+  double ar_rate_hz = 0.0;         // the AR states' step rate (AR only: the model rate when calib.json chose one)
   int states = 0;
   std::vector<EffectEstimate> effects;  // the effects switched on at the end, in layout order
   std::array<double, est::kSensorAxes> sensor_error{}, sensor_error_sigma{};

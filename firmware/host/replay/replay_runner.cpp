@@ -174,6 +174,8 @@ void collect(const board::NavUnit& unit, ReplayResult& r) {
   r.states = static_cast<int>(f.layout().dim);
   const board::DenoiserSpec& d = unit.denoiser();
   r.denoiser = d.wavelet ? d.name + ":" + std::to_string(d.levels) : "none";
+  if (nav.filter().noise().kind == est::NoiseModelKind::AutoRegressive)
+    r.ar_rate_hz = 1.0 / nav.filter().noise().ar_sample_period_s;
   r.effects.clear();
   for (std::size_t e = 0; e < est::kEffectCount; ++e) {
     const auto ef = static_cast<est::Effect>(e);
