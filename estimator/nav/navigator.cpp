@@ -54,6 +54,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   mag_reject_since_s_ = -1.0;
   have_prev_ = have_raw_ = mag_started_ = in_timeout_ = false;
   last_gap_t_s_ = -1e300;
+  horizon_now_s_ = cfg.horizon_s;
   raw_period_s_ = period_s_ = horizontal_accel_m_s2_ = accel_diff_var_ = gyro_diff_var_ = 0.0;
   clip_until_t_s_.fill(kNever);
   last_clip_t_s_.fill(kNever);
@@ -116,7 +117,10 @@ void Navigator::push_filtered(ImuSample s) {
     imu_.pop();
   }
   imu_.push(s);
-  while (!imu_.empty() && imu_.front().t_s <= s.t_s - cfg_.horizon_s) {
+  // Grow the horizon with the latency estimate: samples wait that much longer.
+  horizon_now_s_ = std::min(horizon_limit_s(),
+                            std::max({horizon_now_s_, cfg_.horizon_s, filter_.gps_latency_s() + cfg_.horizon_margin_s}));
+  while (!imu_.empty() && imu_.front().t_s <= s.t_s - horizon_now_s_) {
     process(imu_.front());
     imu_.pop();
   }

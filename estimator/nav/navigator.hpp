@@ -52,7 +52,13 @@ struct NavigatorConfig {
   AlignmentConfig alignment;
   RecoveryConfig recovery;
   ImuScreenConfig screen;            // full scales: clipping
-  double horizon_s = 0.3;            // must exceed the GNSS latency
+  // The delayed horizon: at least this, and it grows with the latency
+  // estimate (latency + horizon_margin_s, up to max_horizon_s and what the IMU
+  // buffer holds), so a receiver slower than assumed is still fused at its
+  // time of validity; the outputs are that much older.
+  double horizon_s = 0.3;
+  double horizon_margin_s = 0.1;
+  double max_horizon_s = 1.2;        // the GPS latency the vocabulary allows is 1 s
   double gate_sigma = 5.0;           // innovation gate [sigma]
   double gps_latency_s = 0.0;        // configured latency (initial value when estimated)
   Eigen::Vector3d lever_arm_b_m = Eigen::Vector3d::Zero();  // antenna minus IMU, body FRD
@@ -175,8 +181,13 @@ class Navigator {
   void fuse_magnetometer(const ImuSample& s);
   void fuse_vehicle_constraints(const ImuSample& s, const BodyRates& now);
   bool fuse(AidingSource src, const Measurement& m, double t_meas);
-  /// The largest latency the delayed horizon can serve (two IMU periods of margin).
-  double max_gps_latency_s() const { return std::max(0.0, cfg_.horizon_s - 2.0 * period_s_ - 0.01); }
+  /// The longest horizon the configuration and the IMU buffer allow.
+  double horizon_limit_s() const {
+    const double buffer_s = period_s_ > 0.0 ? static_cast<double>(kImuBufferCapacity - 2) * period_s_ : cfg_.horizon_s;
+    return std::max(cfg_.horizon_s, std::min(cfg_.max_horizon_s, buffer_s));
+  }
+  /// The largest latency the longest horizon can serve (two IMU periods of margin).
+  double max_gps_latency_s() const { return std::max(0.0, horizon_limit_s() - 2.0 * period_s_ - 0.01); }
   void recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas);
   void update_health(double t_now, double dt);
   void emit();
@@ -209,6 +220,7 @@ class Navigator {
   std::array<int, kSensorAxes> clip_run_{};              // consecutive clipped intervals, per axis
   double period_s_ = 0.0;                                // nominal interval of the processed stream
   double last_gap_t_s_ = -1e300;                         // end of the latest IMU gap
+  double horizon_now_s_ = 0.0;                           // the horizon in use (grows with the latency estimate)
   double horizontal_accel_m_s2_ = 0.0;                   // smoothed (1 s) horizontal specific force, NED
   double accel_diff_var_ = 0.0, gyro_diff_var_ = 0.0;    // mean squared sample-to-sample differences
   StateMask frozen_;

@@ -4,7 +4,9 @@
 // reads -3.7 m/s^2 where gravity is -9.4: bridged by a straight line, that one
 // sample made 5 m/s of vertical velocity; the GPS latency state took the
 // misfit (0.04 -> 0.36 s), beyond the delayed horizon (0.3 s), so every later
-// epoch was "late", never fused, and the summary still said "ok".
+// epoch was "late", never fused, and the summary still said "ok". Now the gap
+// holds its last sample, the latency is not learnt right after a gap, the
+// horizon grows with the latency estimate, and unusable fixes are a loss.
 #include <gtest/gtest.h>
 
 #include "host_tests/estimator/navigator_run.hpp"
@@ -94,24 +96,32 @@ TEST(NavigatorFaults, AGapEndingOnATransientIsBridgedByTheLastSampleAndTheLatenc
   EXPECT_FALSE(watch.lost_seen);
 }
 
-TEST(NavigatorFaults, TheLatencyEstimateNeverLeavesTheDelayedHorizon) {
-  // A receiver whose fixes arrive 0.6 s after their time of validity, told
-  // 0.05 s: the estimate climbs towards the truth but stops where the horizon
-  // (0.3 s) can still serve the epochs, so they keep being fused.
-  const auto truth = AnalyticFlight(FlightProfile{}).sample(kRate, 300.0);
-  const auto gnss = AnalyticFlight::gnss(truth, 8, 0.6, Eigen::Vector3d::Zero(), 0.5, 0.1);
+TEST(NavigatorFaults, AReceiverSlowerThanAssumedIsLearntAndTheHorizonFollowsIt) {
+  // Fixes valid 0.45 s before they arrive (a slow receiver, a long serial
+  // path), the unit told 0.05 s and a 0.3-s horizon: the latency estimate
+  // climbs to the truth and the delayed horizon grows with it (latency +
+  // 0.1 s), so the epochs keep being fused at their time of validity; before,
+  // the horizon was fixed and the estimate beyond it made every epoch late.
+  const auto truth = AnalyticFlight(FlightProfile{}).sample(kRate, 400.0);
+  const auto gnss = AnalyticFlight::gnss(truth, 8, 0.45, Eigen::Vector3d::Zero(), 0.5, 0.1);
   Watch watch(truth, 1e300);
   est::Navigator nav;
   est::NavigatorConfig cfg = config_with_latency_state();
   nav.init(cfg, &watch, nullptr);
   feed(nav, imu_of(truth), gnss);
-  EXPECT_LE(nav.filter().gps_latency_s(), cfg.horizon_s);
-  EXPECT_GE(nav.filter().gps_latency_s(), 0.0);
-  // Late epochs can happen only through arrival jitter: at most a few.
+  // Beyond the old fixed horizon (0.3 s): measured 0.38 s. The analytic
+  // flight's long straight legs leave the latency weakly observable (only
+  // accelerations show it), and it reads ~15 % short here at any value (0.2 s
+  // reads 0.16 s, with or without this change); the simulator's flights give
+  // it within 0.02 s (Diagnose.TheDefaultModelEstimatesAHiddenGpsLatency).
+  EXPECT_GT(nav.filter().gps_latency_s(), 0.33);
+  EXPECT_LT(nav.filter().gps_latency_s(), 0.50);
+  // Late epochs only while the horizon grows (a few), out of ~2000.
   const auto late = nav.counters().gnss_late;
   const auto fused = nav.counters().accepted[static_cast<std::size_t>(est::AidingSource::GnssPosition)] +
                      nav.counters().rejected[static_cast<std::size_t>(est::AidingSource::GnssPosition)];
   EXPECT_LT(late, fused / 100 + 1) << "late " << late << " of " << fused;
+  EXPECT_FALSE(watch.lost_seen);
 }
 
 TEST(NavigatorFaults, FixesThatArriveTooLateToBeFusedAreALossNotAnOk) {
