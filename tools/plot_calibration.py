@@ -36,6 +36,8 @@ def plot_acf(path, out):
     fig, ax = plt.subplots(figsize=(6.4, 3.6), dpi=90)
     ax.plot(lag, [v / r0 for v in col(rows, "measured")], "k", lw=1.2, label="measured (denoised)")
     ax.plot(lag, [v / r0 for v in col(rows, "gm1")], "r--", lw=1, label="GM1")
+    if "ar_model_rate" in rows[0]:  # the AR at the model rate (block means: right beyond one block)
+        ax.plot(lag, [v / r0 for v in col(rows, "ar_model_rate")], "b-.", lw=1, label="AR at the model rate")
     for key in rows[0].keys():
         if key.endswith(tuple(f"_ar{p}" for p in range(1, 11))):
             vals = col(rows, key)
@@ -59,6 +61,13 @@ def plot_allan(path, out):
     ax.fill_between(tau, col(rows, "adev_low"), col(rows, "adev_high"), color="0.85", label="68% interval")
     ax.loglog(tau, col(rows, "adev"), "k.-", lw=1, ms=3, label="measured (raw)")
     ax.loglog(tau, col(rows, "model_adev"), "r--", lw=1, label="fitted Q/N/B/K/R model")
+    models = path.replace(os.sep + "allan_s", os.sep + "allan_models_s")
+    if os.path.exists(models):  # what each EKF model predicts over 1-100 s (white noise N added)
+        m = read(models)
+        mt = col(m, "tau_s")
+        for key, style, label in (("gm1", "m:", "GM1"), ("ar_imu_rate", "g-.", "AR at the IMU rate"),
+                                  ("ar_model_rate", "b-", "AR at the model rate")):
+            ax.loglog(mt, col(m, key), style, lw=1.2, label=label)
     ax.set_xlabel("tau [s]")
     ax.set_ylabel("Allan deviation")
     ax.grid(True, which="both", color="0.9")

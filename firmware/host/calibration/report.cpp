@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/os.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "estimator/noise/ar_model.hpp"
@@ -16,9 +17,27 @@ namespace {
 constexpr double kFullResolution_s = 20.0;
 constexpr std::size_t kDecimation = 10;
 
-void write_acf(const std::string& path, const AxisCalibration& a, double dt) {
+/// The chosen model (method, order) among `fits`, or null.
+const noise::ArModel* chosen_model(const std::array<std::vector<noise::ArModel>, kArMethods>& fits, const ModelChoice& m) {
+  return fits[m.method].size() >= m.order ? &fits[m.method][m.order - 1] : nullptr;
+}
+
+/// The autocorrelation of an AR model sampled every `period_s`, at any lag (linear between its lags).
+struct RateAcf {
+  std::vector<double> r;
+  double period_s = 0.0;
+  double at(double lag_s) const {
+    if (r.empty()) return NAN;
+    const double x = lag_s / period_s;
+    const auto k = static_cast<std::size_t>(x);
+    if (k + 1 >= r.size()) return r.back();
+    return r[k] + (x - static_cast<double>(k)) * (r[k + 1] - r[k]);
+  }
+};
+
+void write_acf(const std::string& path, const AxisCalibration& a, double dt, const RateAcf& at_rate) {
   auto out = fmt::output_file(path);
-  out.print("lag_s,measured,gm1");
+  out.print("lag_s,measured,gm1,ar_model_rate");
   std::array<std::vector<double>, kArMethods> model_acf;
   const std::size_t max_lag = a.acf.empty() ? 0 : a.acf.size() - 1;
   for (std::size_t m = 0; m < kArMethods; ++m) {
@@ -29,7 +48,7 @@ void write_acf(const std::string& path, const AxisCalibration& a, double dt) {
   const auto full = static_cast<std::size_t>(kFullResolution_s / dt);
   for (std::size_t k = 0; k <= max_lag && !a.acf.empty(); k += (k < full ? 1 : kDecimation)) {
     const double lag = static_cast<double>(k) * dt;
-    out.print("{:.6g},{:.9g},{:.9g}", lag, a.acf[k], a.gm.autocorrelation(lag));
+    out.print("{:.6g},{:.9g},{:.9g},{:.9g}", lag, a.acf[k], a.gm.autocorrelation(lag), at_rate.at(lag));
     for (const auto& r : model_acf) {
       if (r.empty()) out.print(",");
       else out.print(",{:.9g}", r[k]);
@@ -45,6 +64,49 @@ void write_allan(const std::string& path, const AxisCalibration& a) {
     out.print("{:.6g},{:.9g},{:.9g},{:.9g},{:.9g}\n", p.tau_s, p.adev, p.adev_low, p.adev_high,
               a.terms.model_adev(p.tau_s));
   }
+}
+
+/// The Allan deviation measured and what each model predicts (white noise N added), every measured tau.
+void write_allan_models(const std::string& path, const AxisAtRate& a) {
+  auto out = fmt::output_file(path);
+  out.print("tau_s,measured,gm1,ar_imu_rate,ar_model_rate\n");
+  for (std::size_t k = 0; k < a.tau_s.size(); ++k)
+    out.print("{:.6g},{:.9g},{:.9g},{:.9g},{:.9g}\n", a.tau_s[k], a.adev_measured[k], a.adev_gm[k], a.adev_ar_imu[k],
+              a.adev_ar_model[k]);
+}
+
+/// report.md's section on the model rate: the candidates' scores and, per axis, the
+/// Allan deviation measured and predicted at a few averaging times.
+template <class Out>
+void print_model_rate(Out& md, const SessionCalibration& ses) {
+  const ModelRate& r = ses.model_rate;
+  md.print("### AR at the model rate\n\nThe AR models are also fitted to block means of the denoised series at "
+           "slower rates; the rate whose {} AR({}) predicts the measured Allan deviation best over 1-100 s (the "
+           "span of an outage; RMS of ln(model / measured), white noise N added) is written to calib.json "
+           "(`ar_model_rate`) and used by the EKF unless `--ar-rate imu`.\n\n| rate [Hz] | score |\n|---|---|\n",
+           kArMethodNames[ses.axes[0].model.method], ses.axes[0].model.order);
+  for (const RateScore& c : r.candidates)
+    md.print("| {:.3g}{} | {:.3f} |\n", c.rate_hz, c.rate_hz == r.rate_hz ? " (chosen)" : "", c.score);
+  md.print("\nAllan deviation, measured / GM1 / AR at {:.3g} Hz / AR at {:.3g} Hz (model rate), white noise N "
+           "added to each model (allan_models_s<n>_<axis>.csv has every tau):\n\n| axis |",
+           ses.sample_rate_hz, r.rate_hz);
+  const double taus[] = {1.0, 3.0, 10.0, 30.0, 100.0};
+  for (const double t : taus) md.print(" tau {:.0f} s |", t);
+  md.print("\n|---|---|---|---|---|---|\n");
+  for (std::size_t i = 0; i < ses.axes.size(); ++i) {
+    const AxisAtRate& a = r.axes[i];
+    md.print("| {} |", ses.axes[i].axis);
+    for (const double t : taus) {
+      std::size_t best = a.tau_s.size();
+      for (std::size_t k = 0; k < a.tau_s.size(); ++k)
+        if (best == a.tau_s.size() || std::abs(std::log(a.tau_s[k] / t)) < std::abs(std::log(a.tau_s[best] / t))) best = k;
+      if (best == a.tau_s.size()) md.print(" |");
+      else md.print(" {:.3g} / {:.3g} / {:.3g} / {:.3g} |", a.adev_measured[best], a.adev_gm[best], a.adev_ar_imu[best],
+                    a.adev_ar_model[best]);
+    }
+    md.print("\n");
+  }
+  md.print("\n");
 }
 
 }  // namespace
@@ -79,7 +141,18 @@ bool write_report(const CalibrationRun& run, const std::string& dir, std::string
       md.print("| axis | turn-on bias | N | B (at tau) | K | GM1 tau_s | model |\n|---|---|---|---|---|---|---|\n");
       std::vector<std::string> all_findings;
       for (const AxisCalibration& a : ses.axes) {
-        write_acf(path(fmt::format("acf_s{}_{}.csv", s + 1, a.axis)), a, dt);
+        RateAcf at_rate;
+        if (ses.model_rate.valid()) {
+          const std::size_t i = static_cast<std::size_t>(&a - ses.axes.data());
+          at_rate.period_s = 1.0 / ses.model_rate.rate_hz;
+          if (const noise::ArModel* m = chosen_model(ses.model_rate.axes[i].ar, a.model)) {
+            const double max_lag_s = a.acf.empty() ? 0.0 : static_cast<double>(a.acf.size()) * dt;
+            // Autocovariance of the block means: at lags beyond a block it is the process's own.
+            at_rate.r = noise::ar_autocorrelation(*m, static_cast<std::size_t>(max_lag_s / at_rate.period_s) + 2);
+          }
+          write_allan_models(path(fmt::format("allan_models_s{}_{}.csv", s + 1, a.axis)), ses.model_rate.axes[i]);
+        }
+        write_acf(path(fmt::format("acf_s{}_{}.csv", s + 1, a.axis)), a, dt, at_rate);
         write_allan(path(fmt::format("allan_s{}_{}.csv", s + 1, a.axis)), a);
         for (std::size_t m = 0; m < kArMethods; ++m) {
           for (const auto& model : a.ar[m]) {
@@ -108,6 +181,7 @@ bool write_report(const CalibrationRun& run, const std::string& dir, std::string
         md.print("{} mean {:.3f} uT std {:.3f} uT ({} samples){}", kMagAxes[i], ses.mag[i].mean_uT, ses.mag[i].std_uT,
                  ses.mag[i].samples, i + 1 < kMagAxes.size() ? "; " : ".\n\n");
       }
+      if (ses.model_rate.valid()) print_model_rate(md, ses);
       md.print("### Where the models fail\n\n");
       if (all_findings.empty()) md.print("No misfit above the report's thresholds.\n");
       for (const auto& f : all_findings) md.print("- {}\n", f);
