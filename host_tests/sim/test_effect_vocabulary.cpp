@@ -8,6 +8,7 @@
 
 #include "estimator/ekf/effect_vocabulary.hpp"
 #include "firmware/host/sim/effects.hpp"
+#include "firmware/host/sim/effects/effect_list.hpp"
 
 namespace sinu::sim {
 namespace {

@@ -1,6 +1,9 @@
 #pragma once
 // Physical effects: the shared vocabulary of `simulate`, `replay --effects`
-// and `diagnose`. Each is absent (the nominal sensor) or has a value:
+// and `diagnose`. Each is one file in sim/effects/ (its JSON value, its
+// random draw, what it does to the sensor models), registered in
+// sim/effects/effect_list.hpp; here the values of a flight, each absent (the
+// nominal sensor) or set:
 //   accel_scale [ppm x3], gyro_scale [ppm x3]    measured = (1 + s) true, per axis
 //   accel_misalign, gyro_misalign [rad, 3x3]     measured = (I + M) true, M off-diagonal
 //                                                (M(i,j): axis i senses axis j; diagonal must be 0)
@@ -21,15 +24,12 @@
 #include <string_view>
 
 #include "firmware/host/dataset/diagnostic.hpp"
+#include "firmware/host/sim/effects/effect_value.hpp"
 #include "firmware/host/sim/rng.hpp"
 
 namespace sinu::sim {
 
 inline constexpr double kTempBiasReference_degC = 25.0;
-
-inline constexpr std::array<std::string_view, 11> kEffectNames = {
-    "accel_scale",     "gyro_scale",     "accel_misalign", "gyro_misalign", "lever_arm",          "gps_latency",
-    "accel_temp_bias", "gyro_temp_bias", "mag_hard_iron",  "mag_soft_iron", "gyro_g_sensitivity"};
 
 struct Effects {
   std::optional<Eigen::Vector3d> accel_scale_ppm{}, gyro_scale_ppm{};
@@ -50,7 +50,10 @@ bool parse_effects(const nlohmann::json& j, const std::string& file, Effects& ou
 bool read_effects_file(const std::string& path, Effects& out, dataset::Diagnostic& err);
 /// The effects as JSON, in the same form parse_effects() reads.
 nlohmann::json effects_to_json(const Effects& e);
-/// Draws `k` distinct effects (k <= 11) with magnitudes large enough to matter.
+/// Draws `k` distinct effects (k <= kEffectCount) with magnitudes large enough to matter.
 Effects draw_random_effects(std::size_t k, Rng& rng);
+/// What the effects do to the sensor models (ImuSensor, GpsReceiver).
+effects::SensorEffects sensor_effects(const Effects& e);
+// The vocabulary's names, in the registration's order: kEffectNames in sim/effects/effect_list.hpp.
 
 }  // namespace sinu::sim

@@ -42,8 +42,8 @@ GpsReceiver::GpsReceiver(const GpsErrorModel& model, const Effects& fx, const Ut
                          std::uint64_t seed)
     : model_(model),
       clock_(clock),
-      lever_arm_b_m_(fx.lever_arm_b_m.value_or(Eigen::Vector3d::Zero())),
-      latency_s_(fx.gps_latency_s.value_or(0.0)),
+      lever_arm_b_m_(sensor_effects(fx).lever_arm_b_m),
+      latency_s_(sensor_effects(fx).gps_latency_s),
       rng_(seed, RngStream::Gps),
       corrupt_rng_(seed, RngStream::Corruption) {
   for (Eigen::Index i = 0; i < 3; ++i) gm_[i].init(model.gm_sigma_ned_m[i], model.gm_tau_s, fix_period_s, rng_);

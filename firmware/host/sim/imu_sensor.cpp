@@ -9,11 +9,11 @@ namespace {
 
 double quantise(double x, double step) { return step > 0.0 ? std::round(x / step) * step : x; }
 
-Eigen::Matrix3d gain(const std::optional<Eigen::Vector3d>& scale_ppm, const std::optional<Eigen::Matrix3d>& mis) {
+/// (I + diag(s)) (I + M): a scale on each axis after the cross-axis mixing.
+Eigen::Matrix3d gain(const Eigen::Vector3d& scale, const Eigen::Matrix3d& misalign) {
   Eigen::Matrix3d s = Eigen::Matrix3d::Identity();
-  if (scale_ppm) s.diagonal() += *scale_ppm * 1e-6;
-  const Eigen::Matrix3d m = Eigen::Matrix3d::Identity() + mis.value_or(Eigen::Matrix3d::Zero());
-  return s * m;
+  s.diagonal() += scale;
+  return s * (Eigen::Matrix3d::Identity() + misalign);
 }
 
 }  // namespace
@@ -52,13 +52,14 @@ ImuSensor::ImuSensor(const ImuErrorModel& model, const Effects& fx, const Eigen:
     : model_(model), rng_(noise_rng) {
   accel_.init(model.accel, dt, rng_);
   gyro_.init(model.gyro, dt, rng_);
-  accel_gain_ = gain(fx.accel_scale_ppm, fx.accel_misalign_rad);
-  gyro_gain_ = gain(fx.gyro_scale_ppm, fx.gyro_misalign_rad);
-  g_sensitivity_ = fx.gyro_g_sensitivity_rad_s_per_m_s2.value_or(Eigen::Matrix3d::Zero());
-  soft_iron_ = fx.mag_soft_iron.value_or(Eigen::Matrix3d::Identity());
-  accel_temp_k_ = fx.accel_temp_bias_m_s2_per_degC.value_or(Eigen::Vector3d::Zero());
-  gyro_temp_k_ = fx.gyro_temp_bias_rad_s_per_degC.value_or(Eigen::Vector3d::Zero());
-  hard_iron_ = fx.mag_hard_iron_uT.value_or(Eigen::Vector3d::Zero());
+  const effects::SensorEffects e = sensor_effects(fx);
+  accel_gain_ = gain(e.accel_scale, e.accel_misalign);
+  gyro_gain_ = gain(e.gyro_scale, e.gyro_misalign);
+  g_sensitivity_ = e.gyro_g_sensitivity;
+  soft_iron_ = e.mag_soft_iron;
+  accel_temp_k_ = e.accel_temp_per_degC;
+  gyro_temp_k_ = e.gyro_temp_per_degC;
+  hard_iron_ = e.mag_hard_iron_uT;
   earth_field_n_uT_ = earth_field_n_uT;
 }
 
