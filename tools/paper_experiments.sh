@@ -31,8 +31,11 @@ for seed in "${seeds[@]}"; do
   /usr/bin/python3 tools/paper_tables.py places "$d/flight/truth.csv" > "$d/places.txt"
   for m in gm ar40 arrate; do
     read -r -a opts <<< "${model[$m]}"
+    # Slower GPS from 300 s on (aligned and converged with every epoch before, as in the paper).
+    t0=$(awk -F, 'NR==2 {print $1; exit}' "$d/flight/imu.csv")
+    from=$(awk -v t="$t0" 'BEGIN {printf "%.3f", t + 300}')
     for p in 0.2 10 15 20 25 30; do
-      "$SINU" replay "${common[@]}" "${opts[@]}" --gps-period "$p" --out "$d/${m}_p$p"
+      "$SINU" replay "${common[@]}" "${opts[@]}" --gps-period "$p" --gps-period-from "$from" --out "$d/${m}_p$p"
     done
     for dur in 20 25 30; do
       list=$(awk -F, -v D="$dur" '{printf "%s%s:%s", (NR>1?",":""), $1, D}' "$d/places.txt")

@@ -122,6 +122,9 @@ void add_replay_command(CLI::App& app, Action& action) {
       "replay", "Replay a dataset or a raw recording through the INS/EKF and write the navigation solution");
   c->nav.add_to(*sub);
   sub->add_option("--gps-period", opt.gps_period_s, "Use one GPS epoch every S seconds (0: all)");
+  sub->add_option("--gps-period-from", opt.gps_period_from_s,
+                  "Start the slower GPS of --gps-period at this dataset time [s] (every epoch before: the paper's "
+                  "Table 5 slows the updates of an aligned, converged filter)");
   sub->add_option("--outage", c->outages, "GPS outages START:DURATION[,...] in the dataset's t [s]");
   sub->add_option("--nav-rate", c->nav_rate_hz, "nav.csv rows per second (0: every IMU sample)")->capture_default_str();
   sub->add_option("--out", c->out_dir, "Output folder")->required();

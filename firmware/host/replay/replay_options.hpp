@@ -21,6 +21,7 @@ struct ReplayOptions {
   drivers::Icm20948Config imu;  // driver settings for a raw recording (as `sinu convert`)
   board::NavUnitConfig unit;
   double gps_period_s = 0.0;  // 0: every epoch
+  double gps_period_from_s = -1e300;  // the slower GPS from this dataset time on (every epoch before)
   std::vector<Outage> outages;
 };
 

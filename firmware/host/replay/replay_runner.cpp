@@ -138,7 +138,7 @@ class UnitFeed final : public ReplayFeed {
       }
     }
     // Slower GPS: keep an epoch once at least a period (less 0.05 s of arrival jitter) has passed.
-    if (opt_.gps_period_s > 0.0 && t_valid - last_used_t_ < opt_.gps_period_s - 0.05) {
+    if (opt_.gps_period_s > 0.0 && t_valid >= opt_.gps_period_from_s && t_valid - last_used_t_ < opt_.gps_period_s - 0.05) {
       ++gnss.dropped_period;
       return;
     }
