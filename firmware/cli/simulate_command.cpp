@@ -1,6 +1,7 @@
 // sinu simulate flight|static --out DIR --seed N [--duration S | --hours H]
 //   [--imu-rate HZ] [--gps-rate HZ] [--effects FILE | --effects-random K]
-//   [--hidden-out FILE] [--corrupt-fraction F]
+//   [--unit-accel-errors] [--hidden-out FILE] [--corrupt-fraction F]
+//   static: [--positions N [--hold-s S] [--transition-s S]]
 // Writes a dataset folder (dataset-format.md) and, optionally, the hidden
 // truth (error-model parameters and effects) as JSON outside that folder.
 #include <cstdio>
@@ -34,6 +35,8 @@ bool inside(const std::filesystem::path& file, const std::filesystem::path& dir)
 
 int simulate(SimulateCli c) {
   if (c.hours > 0.0) c.sim.duration_s = c.hours * 3600.0;
+  // A multi-position session is for calibrating the unit's scale and misalignment: it has them.
+  if (c.sim.positions > 1) c.sim.unit_accel_errors = true;
   if (!c.hidden_out.empty() && inside(c.hidden_out, c.sim.out_dir)) {
     std::fprintf(stderr, "sinu simulate: --hidden-out %s is inside the dataset folder %s; the truth must stay hidden\n",
                  c.hidden_out.c_str(), c.sim.out_dir.c_str());
@@ -75,7 +78,7 @@ int simulate(SimulateCli c) {
   if (c.sim.mode == sim::SimMode::Flight)
     std::printf(", %llu GPS sentences (%llu corrupted)", static_cast<unsigned long long>(result.gps_sentences),
                 static_cast<unsigned long long>(result.corrupted_sentences));
-  std::printf(", %zu effect(s)\n", c.sim.effects.count());
+  std::printf(", %zu effect(s)\n", result.hidden["effects"].size());  // with the unit's drawn ones
   return kExitOk;
 }
 
@@ -87,7 +90,8 @@ void add_mode(CLI::App& parent, Action& action, sim::SimMode mode) {
   CLI::App* sub = parent.add_subcommand(
       flight ? "flight" : "static",
       flight ? "A UAV flight: imu.csv, gps.nmea, truth.csv, meta.json"
-             : "A level, still bench session for calibration: imu.csv, meta.json");
+             : "A bench session for calibration (level and still, or held in --positions N attitudes): "
+               "imu.csv, meta.json");
   sub->add_option("--out", c->sim.out_dir, "Dataset folder to write (created if needed)")->required();
   sub->add_option("--seed", c->sim.seed, "Random seed: the same seed gives the same dataset")->required();
   auto* duration = sub->add_option("--duration", c->sim.duration_s, "Length [s]")->capture_default_str();
@@ -105,6 +109,20 @@ void add_mode(CLI::App& parent, Action& action, sim::SimMode mode) {
   auto* fx_random = sub->add_option("--effects-random", c->effects_random, "Draw K random effects (0-11)")
                         ->check(CLI::Range(0, 11));
   fx->excludes(fx_random);
+  sub->add_flag("--unit-accel-errors", c->sim.unit_accel_errors,
+                "Give the unit its own accelerometer scale factors and misalignment, drawn from the seed where "
+                "--effects sets none (a flight and a static session of one seed: the same values)");
+  if (!flight) {
+    sub->add_option("--positions", c->sim.positions,
+                    "1: level (default); 6..26: held in N attitudes (the six faces, then tilted), turned between "
+                    "them; implies --unit-accel-errors")
+        ->capture_default_str();
+    auto* hold = sub->add_option("--hold-s", c->sim.hold_s, "With --positions: each attitude held this long [s] "
+                                                            "(default: the duration split evenly)");
+    hold->excludes(duration)->excludes(hours);
+    sub->add_option("--transition-s", c->sim.transition_s, "With --positions: time to turn between attitudes [s]")
+        ->capture_default_str();
+  }
   sub->add_option("--hidden-out", c->hidden_out, "Write the hidden truth (error model, effects) as JSON here; "
                                                  "never inside the dataset folder");
   sub->callback([&action, c] { action = [c] { return simulate(*c); }; });

@@ -2,6 +2,7 @@
 // and clear errors for bad effects files.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -127,6 +128,77 @@ TEST(SimulateCli, BadEffectsFileNamesFileAndKey) {
                                  tmp.file("nope.json")});
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.err.find("nope.json"), std::string::npos);
+}
+
+// A multi-position bench session: the same seed gives the same bytes; the
+// hidden file says where each position was held and the unit's drawn
+// accelerometer scale and misalignment, which a flight of the same seed
+// with --unit-accel-errors has too (one unit); without it a flight (and a
+// level session) is as before: no such effects.
+TEST(SimulateCli, PositionsSessionAndTheUnitsAccelErrors) {
+  TempDir tmp;
+  auto positions = [&](const std::string& dir) {
+    return run_sinu({"simulate", "static", "--out", tmp.file(dir), "--seed", "12", "--positions", "7", "--hold-s",
+                     "30", "--transition-s", "3", "--hidden-out", tmp.file(dir + ".json")});
+  };
+  const auto r = positions("a");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("2 effect(s)"), std::string::npos) << r.out;
+  ASSERT_EQ(positions("b").exit_code, 0);
+  EXPECT_EQ(read_file(tmp.file("a/imu.csv")), read_file(tmp.file("b/imu.csv")));
+  EXPECT_EQ(read_file(tmp.file("a.json")), read_file(tmp.file("b.json")));
+  const auto h = nlohmann::json::parse(read_file(tmp.file("a.json")));
+  ASSERT_EQ(h["positions"].size(), 7u);
+  EXPECT_EQ(h["positions"][0]["name"], "-z up");
+  EXPECT_EQ(h["positions"][6]["name"], "+x+y+z up");
+  // 7 holds of 30 s and 6 turns of 3 s.
+  EXPECT_DOUBLE_EQ(h["duration_s"].get<double>(), 7 * 30.0 + 6 * 3.0);
+  const double t0 = h["t0_s"];
+  EXPECT_DOUBLE_EQ(h["positions"][1]["still_from_t"].get<double>() - t0, 33.0);
+  for (const auto& p : h["positions"]) {
+    // The true specific force of a held position is gravity: 9.78..9.84 m/s^2 anywhere on Earth.
+    const auto& f = p["true_specific_force_b_m_s2"];
+    const double g = std::hypot(f[0].get<double>(), f[1].get<double>(), f[2].get<double>());
+    EXPECT_GT(g, 9.77);
+    EXPECT_LT(g, 9.84);
+  }
+  ASSERT_TRUE(h["effects"].contains("accel_scale"));
+  ASSERT_TRUE(h["effects"].contains("accel_misalign"));
+  for (const auto& s : h["effects"]["accel_scale"]) EXPECT_LE(std::abs(s.get<double>()), 15000.0);
+
+  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", tmp.file("f"), "--seed", "12", "--duration", "300",
+                      "--unit-accel-errors", "--hidden-out", tmp.file("f.json")})
+                .exit_code,
+            0);
+  EXPECT_EQ(nlohmann::json::parse(read_file(tmp.file("f.json")))["effects"], h["effects"]) << "one unit, one seed";
+  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", tmp.file("g"), "--seed", "12", "--duration", "300",
+                      "--hidden-out", tmp.file("g.json")})
+                .exit_code,
+            0);
+  EXPECT_EQ(nlohmann::json::parse(read_file(tmp.file("g.json")))["effects"].size(), 0u);
+  // Given values win over drawn ones.
+  const std::string fx = tmp.write("fx.json", R"({"accel_scale": [1000, 2000, 3000]})");
+  ASSERT_EQ(run_sinu({"simulate", "static", "--out", tmp.file("c"), "--seed", "12", "--positions", "6", "--hold-s",
+                      "20", "--effects", fx, "--hidden-out", tmp.file("c.json")})
+                .exit_code,
+            0);
+  const auto hc = nlohmann::json::parse(read_file(tmp.file("c.json")));
+  EXPECT_EQ(hc["effects"]["accel_scale"], nlohmann::json::parse("[1000.0, 2000.0, 3000.0]"));
+  EXPECT_EQ(hc["effects"]["accel_misalign"], h["effects"]["accel_misalign"]);
+
+  const std::string out = tmp.file("o");
+  for (const std::vector<std::string>& bad : std::vector<std::vector<std::string>>{
+           {"--positions", "4"}, {"--positions", "27"}, {"--positions", "6", "--hold-s", "5"},
+           {"--positions", "6", "--hold-s", "20", "--duration", "600"},
+           {"--positions", "6", "--hours", "0.01"}}) {
+    std::vector<std::string> a = {"simulate", "static", "--out", out, "--seed", "1"};
+    a.insert(a.end(), bad.begin(), bad.end());
+    const auto e = run_sinu(a);
+    EXPECT_EQ(e.exit_code, 2) << bad[1] << " " << e.err;
+  }
+  const auto few = run_sinu({"simulate", "static", "--out", out, "--seed", "1", "--positions", "3"});
+  EXPECT_NE(few.err.find("--positions 3 must be 1 (level) or 6..26"), std::string::npos) << few.err;
+  EXPECT_EQ(run_sinu({"simulate", "flight", "--out", out, "--seed", "1", "--positions", "6"}).exit_code, 2);
 }
 
 TEST(SimulateCli, UnwritableOutputExitsOne) {

@@ -95,6 +95,20 @@ Effects draw_random_effects(std::size_t k, Rng& rng) {
   return e;
 }
 
+void draw_unit_accel_errors(Rng& rng, Effects& e) {
+  // ICM-20948 datasheet: sensitivity tolerance +-0.5 % at the component, cross-axis
+  // sensitivity +-2 %; soldered on a board and packaged, 1-1.5 % and 10-20 mrad.
+  constexpr double kScalePpm = 15000.0, kMisalign_rad = 15e-3;
+  Eigen::Vector3d s;
+  for (Eigen::Index i = 0; i < 3; ++i) s[i] = rng.uniform(-kScalePpm, kScalePpm);
+  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+  for (Eigen::Index r = 0; r < 3; ++r)
+    for (Eigen::Index c = 0; c < 3; ++c)
+      if (r != c) m(r, c) = rng.uniform(-kMisalign_rad, kMisalign_rad);
+  if (!e.accel_scale_ppm) e.accel_scale_ppm = s;
+  if (!e.accel_misalign_rad) e.accel_misalign_rad = m;
+}
+
 effects::SensorEffects sensor_effects(const Effects& e) {
   effects::SensorEffects s;
   for_each_sim_effect([&]<class E>() {

@@ -52,6 +52,11 @@ bool read_effects_file(const std::string& path, Effects& out, dataset::Diagnosti
 nlohmann::json effects_to_json(const Effects& e);
 /// Draws `k` distinct effects (k <= kEffectCount) with magnitudes large enough to matter.
 Effects draw_random_effects(std::size_t k, Rng& rng);
+/// The unit's own accelerometer scale factors (up to +-15000 ppm per axis) and
+/// misalignment (off-diagonal terms up to +-15 mrad), drawn from `rng` (stream
+/// UnitAccelErrors of the seed: a flight and a bench session of one seed are
+/// one unit); each fills `e` only where it has no value yet.
+void draw_unit_accel_errors(Rng& rng, Effects& e);
 /// What the effects do to the sensor models (ImuSensor, GpsReceiver).
 effects::SensorEffects sensor_effects(const Effects& e);
 // The vocabulary's names, in the registration's order: kEffectNames in sim/effects/effect_list.hpp.

@@ -16,6 +16,8 @@ enum class RngStream : std::uint64_t {
   Effects = 5,
   Environment = 6,
   Corruption = 7,
+  BenchPositions = 8,   // a multi-position bench session: headings and placement of each attitude
+  UnitAccelErrors = 9,  // the unit's accelerometer scale factors and misalignment (drawn on request)
 };
 
 class Rng {

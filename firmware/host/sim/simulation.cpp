@@ -11,6 +11,8 @@
 #include "firmware/host/dataset/imu_csv.hpp"
 #include "firmware/host/dataset/meta_json.hpp"
 #include "firmware/host/dataset/truth_csv.hpp"
+#include "firmware/host/calibration/bench_positions.hpp"
+#include "firmware/host/sim/bench_schedule.hpp"
 #include "firmware/host/sim/environment.hpp"
 #include "firmware/host/sim/hidden_truth.hpp"
 #include "firmware/host/sim/imu_sensor.hpp"
@@ -58,6 +60,16 @@ bool writer_error(const dataset::Diagnostic& d, dataset::Diagnostic& err) {
   return false;
 }
 
+constexpr double kMinHold_s = 10.0;
+
+nlohmann::json vec_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+// Each position held this long (multi-position static sessions).
+double hold_of(const SimOptions& o) {
+  const auto n = static_cast<double>(o.positions);
+  return o.hold_s > 0.0 ? o.hold_s : (o.duration_s - (n - 1.0) * o.transition_s) / n;
+}
+
 nlohmann::json site_json(const Site& s) {
   return {{"lat_deg", s.lat_rad * kRadToDeg},
           {"lon_deg", s.lon_rad * kRadToDeg},
@@ -67,20 +79,46 @@ nlohmann::json site_json(const Site& s) {
 
 }  // namespace
 
+double session_duration_s(const SimOptions& o) {
+  if (o.positions <= 1 || !(o.hold_s > 0.0)) return o.duration_s;
+  const auto n = static_cast<double>(o.positions);
+  return n * o.hold_s + (n - 1.0) * o.transition_s;
+}
+
 bool validate_options(const SimOptions& o, std::string& why) {
   if (!(o.imu_rate_hz >= 1.0 && o.imu_rate_hz <= kMaxImuRate_hz))
     return why = fmt::format("--imu-rate {} Hz is outside 1..{} Hz", o.imu_rate_hz, kMaxImuRate_hz), false;
   if (!(o.gps_rate_hz > 0.0 && o.gps_rate_hz <= kMaxGpsRate_hz))
     return why = fmt::format("--gps-rate {} Hz is outside 0..{} Hz", o.gps_rate_hz, kMaxGpsRate_hz), false;
   const double min_duration = o.mode == SimMode::Flight ? 300.0 : 1.0;
-  if (!(o.duration_s >= min_duration && o.duration_s <= kMaxDuration_s))
-    return why = fmt::format("duration {} s is outside {}..{} s", o.duration_s, min_duration, kMaxDuration_s), false;
+  const double duration = session_duration_s(o);
+  if (!(duration >= min_duration && duration <= kMaxDuration_s))
+    return why = fmt::format("duration {} s is outside {}..{} s", duration, min_duration, kMaxDuration_s), false;
+  if (o.positions != 1) {
+    if (o.mode == SimMode::Flight) return why = "--positions is for static sessions", false;
+    if (o.positions < calibration::kFaces || o.positions > calibration::kMaxPositions)
+      return why = fmt::format("--positions {} must be 1 (level) or {}..{} (the six faces, then tilted positions)",
+                               o.positions, calibration::kFaces, calibration::kMaxPositions),
+             false;
+    if (!(o.transition_s >= 1.0 && o.transition_s <= 60.0))
+      return why = fmt::format("--transition-s {} s is outside 1..60 s", o.transition_s), false;
+    if (!(hold_of(o) >= kMinHold_s))
+      return why = fmt::format("each of the {} positions would be held {:.1f} s: at least {} s is needed (a longer "
+                               "--hours, or --hold-s)", o.positions, hold_of(o), kMinHold_s),
+             false;
+  }
   return true;
 }
 
-bool run_simulation(const SimOptions& o, SimResult& result, dataset::Diagnostic& err) {
+bool run_simulation(const SimOptions& options, SimResult& result, dataset::Diagnostic& err) {
   std::string why;
-  if (!validate_options(o, why)) return writer_error({o.out_dir, 0, 0, why}, err);
+  if (!validate_options(options, why)) return writer_error({options.out_dir, 0, 0, why}, err);
+  SimOptions o = options;
+  o.duration_s = session_duration_s(options);
+  if (o.unit_accel_errors) {
+    Rng unit_rng(o.seed, RngStream::UnitAccelErrors);
+    draw_unit_accel_errors(unit_rng, o.effects);
+  }
   std::error_code ec;
   std::filesystem::create_directories(o.out_dir, ec);
   if (ec) return writer_error({o.out_dir, 0, 0, "cannot create the output folder: " + ec.message()}, err);
@@ -154,6 +192,37 @@ bool run_simulation(const SimOptions& o, SimResult& result, dataset::Diagnostic&
     result.hidden["gps_error_model"] = gps_error_model_json(o.gps);
     result.hidden["gps_sentences"] = gps.sentences();
     result.hidden["corrupted_sentences"] = gps.corrupted();
+  } else if (o.positions > 1) {
+    // Held in N attitudes, turned between them: gravity and Earth rate are
+    // constant in NED, the body turns under them.
+    const NavState bench{site.heading_rad, site.lat_rad, site.lon_rad, site.ground_h_m};
+    const TrueMotion level = evaluate_motion(t0, ControlValues{}, bench);
+    const Eigen::Vector3d f_n = level.C_nb * level.specific_force_b_m_s2;
+    const Eigen::Vector3d w_ie_n = level.C_nb * level.omega_ib_b_rad_s;
+    Rng positions_rng(o.seed, RngStream::BenchPositions);
+    const BenchSchedule schedule(o.positions, hold_of(o), o.transition_s, site.heading_rad, positions_rng);
+    Eigen::Matrix3d C_nb;
+    Eigen::Vector3d w_nb_b;
+    for (std::uint64_t k = 0; k < n_imu; ++k) {
+      const double tau = static_cast<double>(k) * dt;
+      schedule.at(tau, C_nb, w_nb_b);
+      const Eigen::Vector3d f_b = C_nb.transpose() * f_n, w_b = w_nb_b + C_nb.transpose() * w_ie_n;
+      fill_imu_row(row, t0 + tau, imu.sample(f_b, w_b, C_nb, temp.at(tau)));
+      if (!imu_out.write(row)) return writer_error(imu_out.error(), err);
+    }
+    result.hidden["site"] = site_json(site);
+    result.hidden["hold_s"] = hold_of(o);
+    result.hidden["transition_s"] = o.transition_s;
+    nlohmann::json positions = nlohmann::json::array();
+    for (const BenchPosition& p : schedule.positions()) {
+      positions.push_back({{"name", calibration::position_name(p.index)},
+                           {"up_b", vec_json(calibration::position_up_b(p.index))},
+                           {"still_from_t", t0 + p.still_from_s},
+                           {"still_to_t", t0 + p.still_to_s},
+                           {"true_specific_force_b_m_s2", vec_json(p.C_nb.transpose() * f_n)},
+                           {"true_angular_rate_b_rad_s", vec_json(p.C_nb.transpose() * w_ie_n)}});
+    }
+    result.hidden["positions"] = positions;
   } else {
     // Level and still on a bench: one constant true motion.
     const NavState bench{site.heading_rad, site.lat_rad, site.lon_rad, site.ground_h_m};
@@ -177,7 +246,8 @@ bool run_simulation(const SimOptions& o, SimResult& result, dataset::Diagnostic&
   dataset::Meta meta;
   meta.imu_rate_hz = o.imu_rate_hz;
   if (flight) meta.gps_rate_hz = o.gps_rate_hz;
-  meta.object["notes"] = fmt::format("sinu simulate {} --seed {}", flight ? "flight" : "static", o.seed);
+  meta.object["notes"] = o.positions > 1 ? fmt::format("sinu simulate static --seed {} --positions {}", o.seed, o.positions)
+                                         : fmt::format("sinu simulate {} --seed {}", flight ? "flight" : "static", o.seed);
   if (!dataset::write_meta(paths.meta(), meta, err)) return false;
 
   nlohmann::json& h = result.hidden;

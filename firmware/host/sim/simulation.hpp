@@ -24,6 +24,15 @@ struct SimOptions {
   double imu_rate_hz = 40.0;
   double gps_rate_hz = 5.0;
   Effects effects;
+  /// Static only: 1 = the level bench; N in 6..26 = N attitudes
+  /// (bench_schedule.hpp), each held `hold_s` (0: the duration split evenly),
+  /// with `transition_s` of turning between them.
+  std::size_t positions = 1;
+  double hold_s = 0.0;
+  double transition_s = 4.0;
+  /// Draw the unit's accelerometer scale factors and misalignment from the
+  /// seed where `effects` gives none (draw_unit_accel_errors).
+  bool unit_accel_errors = false;
   /// Replaces the drawn default model (tests: ideal_imu_error_model()).
   std::optional<ImuErrorModel> error_model;
   GpsErrorModel gps;
@@ -36,6 +45,8 @@ struct SimResult {
   std::uint64_t imu_rows = 0, gps_sentences = 0, corrupted_sentences = 0;
 };
 
+/// The session's length: `duration_s`, or N holds and N - 1 transitions when `hold_s` is given.
+double session_duration_s(const SimOptions& o);
 /// Checks option ranges; false with a message naming the option.
 bool validate_options(const SimOptions& o, std::string& why);
 /// Writes the dataset into o.out_dir (created if needed).
