@@ -180,4 +180,56 @@ bool load_calib(const std::string& path, const CalibChoice& choice, est::SensorN
   return true;
 }
 
+bool load_accel_correction(const std::string& path, AccelCorrection& out, std::string& error) {
+  out = AccelCorrection{};
+  std::ifstream in(path);
+  if (!in) {
+    error = path + ": cannot open";
+    return false;
+  }
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) {
+    error = path + ": not valid JSON";
+    return false;
+  }
+  if (!j.is_object() || !j.contains("six_position")) return true;
+  const nlohmann::json& s = j["six_position"];
+  const auto fail = [&](const std::string& key, const std::string& why) {
+    error = path + ": six_position." + key + ": " + why;
+    return false;
+  };
+  const auto vector3 = [&](const char* key, Eigen::Vector3d& v) {
+    if (!s.contains(key) || !s[key].is_array() || s[key].size() != 3) return false;
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (!s[key][i].is_number()) return false;
+      v[static_cast<Eigen::Index>(i)] = s[key][i].get<double>();
+    }
+    return v.allFinite();
+  };
+  if (!s.is_object()) return fail("(section)", "not an object");
+  Eigen::Vector3d scale_ppm, bias;
+  if (!vector3("accel_scale", scale_ppm)) return fail("accel_scale", "expected 3 finite numbers [ppm]");
+  if (scale_ppm.cwiseAbs().maxCoeff() > 1e5) return fail("accel_scale", "above 10 % (100000 ppm): not a scale factor");
+  if (!vector3("accel_bias", bias)) return fail("accel_bias", "expected 3 finite numbers [m/s^2]");
+  Eigen::Matrix3d M;
+  if (!s.contains("accel_misalign") || !s["accel_misalign"].is_array() || s["accel_misalign"].size() != 3)
+    return fail("accel_misalign", "expected a 3x3 array of rows [rad]");
+  for (std::size_t r = 0; r < 3; ++r) {
+    const nlohmann::json& row = s["accel_misalign"][r];
+    if (!row.is_array() || row.size() != 3) return fail("accel_misalign", "expected a 3x3 array of rows [rad]");
+    for (std::size_t c = 0; c < 3; ++c) {
+      if (!row[c].is_number()) return fail("accel_misalign", "expected a 3x3 array of rows [rad]");
+      M(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = row[c].get<double>();
+    }
+  }
+  if (!M.allFinite() || M.diagonal().cwiseAbs().maxCoeff() != 0.0 || M.cwiseAbs().maxCoeff() > 0.2)
+    return fail("accel_misalign", "must be finite, zero on the diagonal and at most 0.2 rad");
+  Eigen::Matrix3d S = Eigen::Matrix3d::Identity();
+  S.diagonal() += scale_ppm * 1e-6;
+  out.gain_inverse = (S * (Eigen::Matrix3d::Identity() + M)).inverse();
+  out.bias_m_s2 = bias;
+  out.present = true;
+  return true;
+}
+
 }  // namespace sinu::board

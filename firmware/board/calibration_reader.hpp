@@ -4,6 +4,7 @@
 // axes.<..>.ar.<method>[p-1] {a: [1, a1..ap], variance}; axes.<..>.allan.N
 // (white-noise density, optional); the AR models' sample rate from
 // "sample_rate_hz" at the top level or inside "denoiser" (default 40 Hz).
+#include <Eigen/Core>
 #include <string>
 
 #include "estimator/ekf/sensor_noise.hpp"
@@ -28,6 +29,20 @@ struct DenoiserSpec {
 
 /// "none", "WAVELET:LEVELS" (e.g. "db4:3"); false with `error` otherwise.
 bool parse_denoiser(const std::string& text, DenoiserSpec& out, std::string& error);
+
+/// The unit's accelerometer errors known from a multi-position bench
+/// calibration (calib.json "six_position": scale [ppm], misalignment [rad],
+/// bias [m/s^2]), as the correction applied to every sample before the
+/// filter: f = gain_inverse (f_raw - bias), gain = (I + diag s)(I + M).
+struct AccelCorrection {
+  bool present = false;
+  Eigen::Matrix3d gain_inverse = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d bias_m_s2 = Eigen::Vector3d::Zero();
+};
+
+/// Reads calib.json's "six_position" when it has one (`out.present` false
+/// when not); false with `error` = "calib.json: six_position.<key>: <why>".
+bool load_accel_correction(const std::string& path, AccelCorrection& out, std::string& error);
 
 /// Fills `noise` (and `denoiser` from calib.json's "denoiser" block, none if absent); false with `error` = "calib.json: <key>: <why>" otherwise.
 bool load_calib(const std::string& path, const CalibChoice& choice, est::SensorNoise& noise, DenoiserSpec& denoiser,

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "drivers/imu/icm20948_registers.hpp"
+#include "estimator/prefilter/correcting_prefilter.hpp"
 #include "estimator/prefilter/wavelet_prefilter.hpp"
 #include "firmware/board/model_file.hpp"
 
@@ -33,11 +34,19 @@ bool NavUnit::init(const NavUnitConfig& c, est::NavObserver* observer, std::stri
   cfg.noise = est::SensorNoise::defaults(c.calib.kind);
   denoiser_ = {};
   if (!c.calib_path.empty() && !load_calib(c.calib_path, c.calib, cfg.noise, denoiser_, error)) return false;
+  AccelCorrection accel;
+  if (!c.calib_path.empty() && !load_accel_correction(c.calib_path, accel, error)) return false;
   cfg.noise.scale_coloured(c.process_noise_scale);
   if (c.denoise != "auto" && !parse_denoiser(c.denoise, denoiser_, error)) return false;
   prefilter_.reset();
   if (denoiser_.wavelet) {
     prefilter_ = est::make_wavelet_prefilter(*est::wavelet::parse_wavelet(denoiser_.name), denoiser_.levels);
+  }
+  // The unit's scale, misalignment and bias from a multi-position calibration:
+  // known values, corrected before the denoiser and the filter (no states).
+  correction_.reset();
+  if (accel.present) {
+    correction_ = std::make_unique<est::CorrectingPrefilter>(prefilter_.get(), accel.gain_inverse, accel.bias_m_s2);
   }
   cfg.effects = c.effects;
   if (!c.model_path.empty() && !read_model_file(c.model_path, cfg.effects, cfg.tuning.prior, error)) return false;
@@ -58,7 +67,7 @@ bool NavUnit::init(const NavUnitConfig& c, est::NavObserver* observer, std::stri
   cfg.lever_arm_b_m = c.lever_arm_b_m;
   cfg.horizon_s = std::max(0.3, c.gps_latency_s + 0.25);
   nav_ = std::make_unique<est::Navigator>();
-  nav_->init(cfg, observer, prefilter_.get());
+  nav_->init(cfg, observer, correction_ ? correction_.get() : prefilter_.get());
   return true;
 }
 

@@ -58,6 +58,7 @@ class NavUnit {
   NavUnitConfig cfg_;
   DenoiserSpec denoiser_;
   std::unique_ptr<est::ImuPrefilter> prefilter_;
+  std::unique_ptr<est::ImuPrefilter> correction_;  // calib.json's six_position, in front of prefilter_
   std::unique_ptr<est::Navigator> nav_;
   // The last fix with a position, for the solution's time and receiver fields.
   bool have_fix_ = false, fix_has_utc_ = false;
