@@ -1,7 +1,12 @@
 // sinu calibrate --in STATIC_DATASET [--in ...] --out calib.json [--report DIR]
 //                [--no-denoise] [--wavelet NAME --levels N] [--model METHOD:P] [--quiet]
+//                [--latitude DEG] [--height M]
 // The paper's Section 3 on static bench data: per axis mean (turn-on bias),
 // denoise, GM1, AR(1..10) by Yule-Walker/Covariance/Burg, Allan deviation.
+// A session held still in several attitudes (or several --in, one face
+// each) is a multi-position calibration: the still segments are found, the
+// noise models fitted on the longest, and the accelerometer's bias, scale and
+// misalignment and the gyro bias fitted on all (calib.json "six_position").
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -10,6 +15,7 @@
 #include "firmware/host/calibration/calibration_run.hpp"
 #include "firmware/host/calibration/progress_bar.hpp"
 #include "firmware/host/calibration/report.hpp"
+#include "firmware/host/calibration/six_position_run.hpp"
 #include "firmware/cli/calibrate_command.hpp"
 #include "firmware/cli/command.hpp"
 #include "firmware/cli/exit_codes.hpp"
@@ -61,6 +67,7 @@ int run_calibrate(const CalibrateOptions& o) {
       return kExitUsage;
     }
   }
+  std::vector<calibration::SessionStillParts> still;
   for (const std::string& in : o.inputs) {
     calibration::StaticSession session;
     dataset::Diagnostic err;
@@ -79,6 +86,11 @@ int run_calibrate(const CalibrateOptions& o) {
       std::fprintf(stderr, "sinu calibrate: %s: %zu rows without accelerometer/gyro values skipped, %zu gaps in time\n",
                    in.c_str(), session.rows_without_imu, session.gaps);
     }
+    // Held in one attitude: the whole session, as always; in several: the noise
+    // models from its longest still segment (the multi-position fit below).
+    still.push_back(calibration::find_still_parts(session, run.sessions.size()));
+    const calibration::SessionStillParts& parts = still.back();
+    if (!parts.whole) session = calibration::slice_session(session, parts.noise_begin, parts.noise_end);
     calibration::ProgressBar fitting("fitting " + in, static_cast<double>(calibration::kImuAxes.size()),
                                !o.quiet && session.duration_s > kLongSession_s);
     double done = 0.0;
@@ -86,6 +98,19 @@ int run_calibrate(const CalibrateOptions& o) {
     fitting.finish();
   }
   std::string why;
+  calibration::GravityModel gravity;
+  gravity.latitude_given = std::isfinite(o.latitude_deg);
+  gravity.height_given = std::isfinite(o.height_m);
+  if (gravity.latitude_given) gravity.latitude_deg = o.latitude_deg;
+  if (gravity.height_given) gravity.height_m = o.height_m;
+  calibration::SixPositionCalibration positions;
+  switch (calibration::calibrate_positions(still, run.sessions, gravity, positions, why)) {
+    case calibration::PositionsOutcome::SinglePosition: break;
+    case calibration::PositionsOutcome::Failed:
+      std::fprintf(stderr, "sinu calibrate: %s: %s\n", o.inputs.front().c_str(), why.c_str());
+      return kExitFailure;
+    case calibration::PositionsOutcome::Fitted: run.six_position = positions; break;
+  }
   if (!calibration::write_calib_json(run, o.out, why)) {
     std::fprintf(stderr, "sinu calibrate: %s\n", why.c_str());
     return kExitFailure;
@@ -100,6 +125,7 @@ int run_calibrate(const CalibrateOptions& o) {
   }
   std::printf("calibration: %s (%zu session%s, denoiser: %s, model: %s)\n", o.out.c_str(), run.sessions.size(),
               run.sessions.size() == 1 ? "" : "s", run.denoiser.name.c_str(), o.model.c_str());
+  if (run.six_position) std::printf("%s", calibration::six_position_report(*run.six_position).c_str());
   return kExitOk;
 }
 
@@ -117,6 +143,13 @@ void add_calibrate_command(CLI::App& app, Action& action) {
       ->check(CLI::Range(1, 12));
   cmd->add_option("--model", o->model, "Model the EKF uses, METHOD:P")->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress bar");
+  cmd->add_option("--latitude", o->latitude_deg,
+                  "Multi-position session: the bench's latitude [deg] for local gravity (default 45, and every scale "
+                  "factor's sigma then holds |g|'s 0.15 % spread)")
+      ->check(CLI::Range(-90.0, 90.0));
+  cmd->add_option("--height", o->height_m, "Multi-position session: the bench's ellipsoidal height [m] (default 0, "
+                                           "with a 300-m sigma)")
+      ->check(CLI::Range(-500.0, 9000.0));
   cmd->callback([&action, o] { action = [o] { return run_calibrate(*o); }; });
 }
 

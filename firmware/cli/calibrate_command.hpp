@@ -1,5 +1,6 @@
 #pragma once
 // `sinu calibrate`'s run, also the last step of `sinu bench`.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,8 @@ struct CalibrateOptions {
   std::string out, report_dir, wavelet = "db4", model = "burg:3";
   int levels = 3;
   bool no_denoise = false, quiet = false;
+  // Local gravity for a multi-position session (normal gravity formula); NaN: not given.
+  double latitude_deg = NAN, height_m = NAN;
 };
 
 /// Fits the sessions and writes calib.json (and the report); an exit code, messages on stderr.

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <fstream>
 
+#include "firmware/host/calibration/six_position_run.hpp"
+
 namespace sinu::calibration {
 
 namespace {
@@ -132,6 +134,7 @@ nlohmann::json calibration_to_json(const CalibrationRun& run) {
   j["magnetometer"] = s0["magnetometer"];
   j["sessions"] = json::array();
   for (const auto& s : run.sessions) j["sessions"].push_back(session_json(s));
+  if (run.six_position) j["six_position"] = six_position_json(*run.six_position);
   return j;
 }
 

@@ -7,6 +7,8 @@
 //   axes.<..>.turn_on_bias, denoiser {name, wavelet, levels, sample_rate_hz}
 // The first session fills `axes`; every session (with the first) is also in
 // `sessions` for the cross-dataset comparison.
+// A multi-position session adds "six_position" (six_position_run.hpp): the
+// accelerometer's bias, scale and misalignment and the gyro bias, with sigmas.
 #include <nlohmann/json.hpp>
 #include <string>
 

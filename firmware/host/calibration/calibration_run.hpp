@@ -3,12 +3,14 @@
 // The first session is the calibration the EKF uses; the others are the
 // paper's cross-dataset comparison (coefficient consistency, Tables 1-3).
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "firmware/host/calibration/axis_calibration.hpp"
 #include "firmware/host/calibration/denoiser.hpp"
 #include "firmware/host/calibration/model_rate.hpp"
+#include "firmware/host/calibration/six_position.hpp"
 #include "firmware/host/calibration/static_session.hpp"
 
 namespace sinu::calibration {
@@ -31,6 +33,7 @@ struct SessionCalibration {
 struct CalibrationRun {
   Denoiser denoiser;
   std::vector<SessionCalibration> sessions;
+  std::optional<SixPositionCalibration> six_position;  // a session held in several attitudes
 };
 
 /// Calibrates one loaded session. `on_axis_done` (optional) after each axis.

@@ -60,6 +60,7 @@ bool load_static_session(const std::string& dataset, StaticSession& out, dataset
                              " rows with accelerometer and gyro values, found " + std::to_string(n)};
     return false;
   }
+  out.t0_s = t_first;
   out.duration_s = t_last - t_first;
   out.dt_s = out.duration_s / static_cast<double>(n - 1);
   for (std::size_t i = 1; i < n; ++i) {

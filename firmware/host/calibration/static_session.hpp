@@ -22,6 +22,7 @@ struct StaticSession {
   std::array<std::vector<double>, 6> imu;    // ax ay az [m/s^2], gx gy gz [rad/s]
   std::array<std::vector<double>, 3> mag;    // mx my mz [uT]
   double dt_s = 0.0;                         // mean sample interval
+  double t0_s = 0.0;                         // t of the first row with accelerometer and gyro values
   double duration_s = 0.0;
   std::size_t rows = 0;
   std::size_t rows_without_imu = 0;          // skipped
