@@ -111,5 +111,57 @@ TEST(Bench, ATiltAndATemperatureStepAreWarnedAndMarkedWhenTheyHappen) {
   EXPECT_TRUE(stepped) << b.dump();
 }
 
+// --positions 6: the board asked for each face in turn (prompts on stderr),
+// here an emulated board playing a session that holds the six faces a minute
+// each; every face is held 30 s, then the whole recording is calibrated as a
+// multi-position session.
+TEST(Bench, SixPositionsAskedForHeldAndCalibrated) {
+  TempDir tmp;
+  const std::string dir = tmp.file("faces"), raw = tmp.file("faces.raw"), q = tmp.file("faces_q");
+  ASSERT_EQ(run_sinu({"simulate", "static", "--positions", "6", "--hold-s", "60", "--seed", "4", "--out", dir})
+                .exit_code,
+            0);
+  ASSERT_EQ(run_sinu({"convert", dir, raw}).exit_code, 0);
+  ASSERT_EQ(run_sinu({"convert", raw, q}).exit_code, 0);
+  const std::string out = tmp.file("bench"), target = tmp.file("var_lib_sinu/calib.json");
+  const ProcessResult r = run_sinu({"bench", "--emulate", q, "--speed", "0", "--positions", "6", "--hold-s", "30",
+                                    "--out", out, "--calib", target, "--quiet"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const char* faces[] = {"-z up: level", "+x up: nose up", "+y up: on its left side", "-x up: nose down",
+                         "-y up: on its right side", "+z up: upside down"};
+  std::size_t at = 0;
+  for (int k = 0; k < 6; ++k) {
+    const std::string ask = "position " + std::to_string(k + 1) + "/6: place the board " + faces[k];
+    const std::size_t p = r.err.find(ask, at);
+    ASSERT_NE(p, std::string::npos) << ask << "\n" << r.err;
+    const std::size_t held = r.err.find("position " + std::to_string(k + 1) + "/6 held", p);
+    ASSERT_NE(held, std::string::npos) << r.err;
+    at = held;
+  }
+  const nlohmann::json b = read_json(out + "/bench.json");
+  ASSERT_EQ(b["held"].size(), 6u) << b.dump();
+  for (const auto& f : b["held"]) {
+    EXPECT_EQ(f["asked"], f["held"]);
+    EXPECT_NEAR(f["end_t"].get<double>() - f["start_t"].get<double>(), 30.0, 1.0) << "held 30 s (1-s windows)";
+  }
+  const nlohmann::json calib = read_json(target);
+  ASSERT_TRUE(calib.contains("six_position")) << calib.dump().substr(0, 200);
+  EXPECT_EQ(calib["six_position"]["segments_used"], 6);
+  EXPECT_EQ(calib["six_position"]["attitudes"], 6);
+  EXPECT_TRUE(calib.contains("axes"));
+  EXPECT_NE(r.out.find("six-position: 6 still segments"), std::string::npos) << r.out;
+}
+
+// A recording that ends before every position was held calibrates nothing.
+TEST(Bench, PositionsNotAllHeldIsAFailure) {
+  TempDir tmp;
+  const std::string session = bench_session(tmp, 120);  // level only
+  const ProcessResult r = run_sinu({"bench", "--emulate", session, "--speed", "0", "--positions", "6", "--hold-s",
+                                    "30", "--out", tmp.file("bench"), "--calib", tmp.file("calib.json"), "--quiet"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("1 of 6 positions held"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("calib.json")));
+}
+
 }  // namespace
 }  // namespace sinu::test
