@@ -61,11 +61,12 @@ cmp -s "$out/fly_nav.csv" "$out/fly_replay/nav.csv" && echo "fly: the recording 
 drive=../shared/data/real/drive_0708
 if [ -d "$drive" ]; then
   "$SINU" inspect dataset "$drive"
-  # A car: the non-holonomic constraint and zero-velocity updates (--vehicle ground); ten 15-s GNSS outages
-  # every 45 s from 60 s after it first moves faster than 3 m/s.
+  # A car, nothing said about it: the default vehicle auto finds it is one (the non-holonomic constraint
+  # and zero-velocity updates from then on); ten 15-s GNSS outages every 45 s from 60 s after it first
+  # moves faster than 3 m/s.
   moving=$(awk -F, '$2 ~ /RMC$/ && $9 * 0.514444 > 3 {print $1; exit}' "$drive/gps.nmea")
   drive_outages=$(awk -v t="$moving" 'BEGIN {for (k = 0; k < 10; ++k) printf "%s%.3f:15", (k ? "," : ""), t + 60 + 45 * k}')
-  "$SINU" replay --in "$drive" --vehicle ground --outage "$drive_outages" --out "$out/drive_0708"
+  "$SINU" replay --in "$drive" --outage "$drive_outages" --out "$out/drive_0708"
 else
   echo "main_job.sh: $drive is absent; skipping the real drive" >&2
 fi
