@@ -71,7 +71,7 @@ struct HandMade {
     CandidateResult c;
     c.effect = est::Effect::LeverArm;
     c.nll_gain = 52.5;
-    c.penalty = 9.2;
+    c.evidence_threshold = 4.6;
     c.significance = 12.0;
     c.estimate = {0.9, -0.5, -0.6};
     c.sigma = {0.05, 0.06, 0.04};

@@ -58,12 +58,6 @@ bool replay_and_score(replay::ReplayOptions opt, est::EffectSet effects, const s
   return true;
 }
 
-std::uint64_t innovation_count(const InnovationStats& s) {
-  std::uint64_t n = 0;
-  for (const ComponentStats& c : s.source) n += c.count;
-  return n;
-}
-
 // Every flight phase with enough samples shows the source's misfit alike
 // (within 0.6-1.6x its flight average): a noise level, not an effect.
 bool alike_in_every_phase(const InnovationStats& st, std::size_t k) {
@@ -237,7 +231,6 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     round.rmse_pos_h_m = current.rmse_pos_h_m;
     round.rmse_att_deg = current.rmse_att_deg;
     round.outage_drift_h_m = current.outage_drift_h_m;
-    const double ln_n = std::log(std::max<double>(2.0, static_cast<double>(innovation_count(current.stats))));
     // The candidates this round tries, then their replays in parallel (one per
     // core; each reads the data itself and shares nothing but `tuned`).
     std::vector<est::Effect> trials;
@@ -284,7 +277,11 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
       CandidateResult c;
       c.effect = effect;
       c.nll_gain = current.stats.total_nll() - score.stats.total_nll();
-      c.penalty = 0.5 * static_cast<double>(est::kEffectDims[static_cast<std::size_t>(effect)]) * ln_n;
+      // The replay's innovation likelihood is already marginal over the effect's
+      // states (they start from their prior and every innovation carries their
+      // uncertainty), so it pays for the extra parameters itself: the gain is
+      // a log Bayes factor, and a BIC term on top would charge for them twice.
+      c.evidence_threshold = o.min_log_evidence;
       for (const replay::EffectEstimate& eff : score.effects) {
         if (eff.effect != effect) continue;
         // Soft iron: a scale common to the three diagonal terms (xx yy zz) trades
@@ -314,12 +311,12 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
       c.rmse_att_deg = score.rmse_att_deg;
       round.candidates.push_back(c);
     }
-    // Best first: those that explain the data, by likelihood gain beyond the penalty.
+    // Best first: those that explain the data, by likelihood gain beyond the threshold.
     std::vector<std::size_t> order(round.candidates.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     auto rank = [&](std::size_t i) {
       const CandidateResult& c = round.candidates[i];
-      return (c.explains(o.min_significance) ? 1e12 : 0.0) + c.nll_gain - c.penalty;
+      return (c.explains(o.min_significance) ? 1e12 : 0.0) + c.nll_gain - c.evidence_threshold;
     };
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank(a) > rank(b); });
     std::vector<CandidateResult> sorted;

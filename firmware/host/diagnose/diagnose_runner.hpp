@@ -9,8 +9,9 @@
 // 2. For each candidate effect in the vocabulary the EKF can estimate, replay
 //    again with its states added; score the innovations' likelihood. An effect
 //    that is really in the data makes the filter predict its measurements
-//    better: the negative log-likelihood falls by far more than the BIC
-//    penalty of its extra states, and its estimate is many sigmas from zero.
+//    better: the log-likelihood rises (a log Bayes factor: the states start
+//    from their prior, so their cost is in it) beyond a decisive threshold,
+//    and its estimate is many sigmas from zero.
 // 3. Keep the best such effect, repeat (greedy) for a few rounds, and report
 //    the sequence with the error before and after.
 #include <string>
@@ -30,6 +31,7 @@ struct DiagnoseOptions {
   est::EffectSet candidates;     // tried one at a time
   int rounds = 2;
   double min_significance = 3.0;  // |estimate| / sigma of at least one component
+  double min_log_evidence = 4.6;  // log Bayes factor: ln 100, "decisive" on Jeffreys' scale
   bool tune_mag_sigma = true;     // scale the magnetometer sigma so its NIS is 1 before comparing
   bool tune_process_noise = true; // without calib.json: pick the default model's scale by likelihood
   std::string apply_path;         // non-empty: write the final model's effects there (a model file)
@@ -40,7 +42,7 @@ struct DiagnoseOptions {
 struct CandidateResult {
   est::Effect effect{};
   double nll_gain = 0.0;     // baseline NLL - NLL with the effect
-  double penalty = 0.0;      // BIC: 0.5 k ln(N)
+  double evidence_threshold = 0.0;  // the log Bayes factor it must exceed (DiagnoseOptions::min_log_evidence)
   double significance = 0.0; // max |estimate - assumed value| / sigma
   std::vector<double> estimate, sigma;
   std::vector<double> sigma_ratio;  // per component: posterior / prior sigma (near 1: the flight did not reveal it)
@@ -48,14 +50,14 @@ struct CandidateResult {
   double rmse_pos_h_m = -1.0, rmse_att_deg = -1.0;  // against truth.csv (-1: none)
   double plausibility = 0.0; // max |estimate| / the vocabulary's plausible maximum: above 1 no real unit has it
   bool plausible() const { return plausibility <= 1.0; }
-  /// The data want it (likelihood beyond the penalty, an estimate many sigmas
+  /// The data want it (likelihood beyond the threshold, an estimate many sigmas
   /// from the assumed value) and a real unit can have it.
   bool explains(double min_significance) const {
-    return nll_gain > penalty && significance >= min_significance && plausible();
+    return nll_gain > evidence_threshold && significance >= min_significance && plausible();
   }
   /// The data want it but only at a size no real unit has: the misfit is something else.
   bool implausible_fit(double min_significance) const {
-    return nll_gain > penalty && significance >= min_significance && !plausible();
+    return nll_gain > evidence_threshold && significance >= min_significance && !plausible();
   }
 };
 

@@ -313,7 +313,7 @@ std::string estimate_cell(const CandidateResult& c) {
 std::string candidate_row(const CandidateResult& c, double min_significance) {
   std::string out = "<tr class=\"" + verdict_class(c, min_significance) + "\"><td>" +
                     escape(est::spec(c.effect).name) + "</td><td class=\"v\">" + escape(verdict_text(c, min_significance)) + "</td>";
-  out += "<td>" + format_number("%.1f", c.nll_gain) + "</td><td>" + format_number("%.1f", c.penalty) + "</td><td>" +
+  out += "<td>" + format_number("%.1f", c.nll_gain) + "</td><td>" + format_number("%.1f", c.evidence_threshold) + "</td><td>" +
          format_number("%.1f", c.significance) + "</td><td class=\"est\">" + estimate_cell(c) + "</td><td>" +
          escape(est::spec(c.effect).unit) + "</td><td class=\"nw\">";
   for (std::size_t k = 0; k < kSources; ++k) {
@@ -328,12 +328,12 @@ std::string round_evidence(const Round& round, std::size_t index, double min_sig
                     escape(effect_list(round.model)) + ")</h3>\n";
   std::vector<svg::PairRow> rows;
   for (const CandidateResult& c : round.candidates)
-    rows.push_back({est::spec(c.effect).name, c.nll_gain, c.penalty, verdict_class(c, min_significance)});
+    rows.push_back({est::spec(c.effect).name, c.nll_gain, c.evidence_threshold, verdict_class(c, min_significance)});
   out += "<div class=\"legend\"><span><i class=\"sw explains\"></i>log-likelihood gain: explains the data</span>"
          "<span><i class=\"sw implausible\"></i>fits, but implausibly large</span><span><i class=\"sw no\"></i>does not "
-         "explain it</span><span><i class=\"sw penalty\"></i>BIC penalty</span></div>\n";
+         "explain it</span><span><i class=\"sw penalty\"></i>threshold</span></div>\n";
   out += svg::paired_bars(rows);
-  out += "<table><tr><th>effect</th><th>verdict</th><th>log-likelihood gain</th><th>BIC penalty</th>"
+  out += "<table><tr><th>effect</th><th>verdict</th><th>log-likelihood gain</th><th>threshold</th>"
          "<th>max |estimate &minus; assumed| / &sigma;</th><th class=\"est\">estimate &plusmn; &sigma;</th><th>unit</th>"
          "<th>NIS pos / vel / mag</th>"
          "<th>horizontal RMSE vs truth</th></tr>";
@@ -344,8 +344,9 @@ std::string round_evidence(const Round& round, std::size_t index, double min_sig
 std::string candidates_section(const DiagnoseOptions& o, const Diagnosis& d) {
   std::string out = "<section id=\"candidates\"><h2>Candidate effects: the evidence</h2>\n<p>Each candidate is a replay "
                     "with its states added. It explains the data when the innovations' log-likelihood rises by more "
-                    "than the BIC penalty 0.5 k ln N of its k states (the thick bar beyond the thin one; symmetric "
-                    "log scale), its estimate is at least " + format_number("%.3g", o.min_significance) +
+                    "than the threshold, a log Bayes factor of " + format_number("%.2g", o.min_log_evidence) +
+                    " (the states start from their prior, so the likelihood already pays for them; the thick bar "
+                    "beyond the thin one; symmetric log scale), its estimate is at least " + format_number("%.3g", o.min_significance) +
                     " &sigma; from the value assumed without it, and a real unit can have it.</p>\n";
   bool any = false;
   for (std::size_t r = 0; r < d.rounds.size(); ++r) {

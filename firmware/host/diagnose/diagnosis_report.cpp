@@ -50,7 +50,8 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
   md << "Each run is a full `sinu replay` (folders beside this report). NIS per component is y^2/S for each\n"
         "innovation component, averaged: 1 when the filter's model predicts the measurements as well as it\n"
         "claims. A candidate effect is named when adding its states raises the innovations' log-likelihood by\n"
-        "more than the BIC penalty 0.5 k ln(N) and its estimate is at least "
+        "more than " << o.min_log_evidence << " (a log Bayes factor: the states start from their prior, so the\n"
+        "likelihood already pays for them) and its estimate is at least "
      << o.min_significance << " sigma from zero.\n\n";
   if (!d.rounds.empty()) {
     const Round& base = d.rounds.front();
@@ -79,17 +80,17 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
     const Round& round = d.rounds[r];
     if (round.candidates.empty()) continue;
     md << "## Round " << r + 1 << ": candidates added to (" << effect_list(round.model) << ")\n\n";
-    md << "| effect | log-likelihood gain | BIC penalty | max abs(estimate - assumed)/sigma | estimate | NIS pos / vel / mag | "
+    md << "| effect | log-likelihood gain | threshold | max abs(estimate - assumed)/sigma | estimate | NIS pos / vel / mag | "
           "horizontal RMSE vs truth |\n|---|---|---|---|---|---|---|\n";
     nlohmann::json cands = nlohmann::json::array();
     for (const CandidateResult& c : round.candidates) {
       const auto e = static_cast<std::size_t>(c.effect);
       md << "| " << est::kEffectNames[e] << (c.explains(o.min_significance) ? " **(explains)**" : "")
          << (c.implausible_fit(o.min_significance) ? " (fits, but implausibly large)" : "") << " | "
-         << fmt("%.1f", c.nll_gain) << " | " << fmt("%.1f", c.penalty) << " | " << fmt("%.1f", c.significance)
+         << fmt("%.1f", c.nll_gain) << " | " << fmt("%.1f", c.evidence_threshold) << " | " << fmt("%.1f", c.significance)
          << " | " << estimate_text(c) << " | " << nis_cell(c.stats.source[0]) << " / " << nis_cell(c.stats.source[1])
          << " / " << nis_cell(c.stats.source[2]) << " | " << rmse_text(c.rmse_pos_h_m, "m") << " |\n";
-      cands.push_back({{"effect", est::kEffectNames[e]}, {"nll_gain", c.nll_gain}, {"penalty", c.penalty},
+      cands.push_back({{"effect", est::kEffectNames[e]}, {"nll_gain", c.nll_gain}, {"evidence_threshold", c.evidence_threshold},
                        {"significance", c.significance}, {"estimate", c.estimate}, {"sigma", c.sigma},
                        {"explains", c.explains(o.min_significance)}, {"plausibility", c.plausibility},
                        {"rmse_pos_h_m", c.rmse_pos_h_m}});

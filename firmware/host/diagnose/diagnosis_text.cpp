@@ -119,7 +119,7 @@ std::string process_noise_text(const Diagnosis& d) {
 
 std::string missing_effect_text(const CandidateResult& c) {
   return std::string(est::spec(c.effect).name) + " = " + estimate_text(c) + " (innovation log-likelihood +" +
-         format_number("%.1f", c.nll_gain) + ", BIC penalty " + format_number("%.1f", c.penalty) + ")";
+         format_number("%.1f", c.nll_gain) + ", threshold " + format_number("%.1f", c.evidence_threshold) + ")";
 }
 
 std::string implausible_fit_text(const CandidateResult& c) {
@@ -172,8 +172,8 @@ std::string conclusion_sentence(const Diagnosis& d) {
   }
   const std::string error = error_text(d.rounds.back());
   if (d.noise_findings.empty())
-    return "The model explains the data: no candidate effect raises the innovations' log-likelihood beyond its BIC "
-           "penalty. Error: " + error + ".";
+    return "The model explains the data: no candidate effect raises the innovations' log-likelihood beyond the "
+           "threshold. Error: " + error + ".";
   return "No effect of the vocabulary explains the misfit, and " + std::to_string(d.noise_findings.size()) +
          " noise level" + (d.noise_findings.size() > 1 ? "s do" : " does") + " not fit (see the noise findings). Error: " +
          error + ".";

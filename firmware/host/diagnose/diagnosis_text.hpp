@@ -37,7 +37,7 @@ std::vector<std::string> tuned_noise_findings(const Diagnosis& d);
 /// Without calib.json: the scale chosen for the built-in sensor model ("" if none).
 std::string process_noise_text(const Diagnosis& d);
 
-/// "gyro_misalign = [...] mrad (innovation log-likelihood +104.0, BIC penalty 33.3)".
+/// "gyro_misalign = [...] mrad (innovation log-likelihood +104.0, threshold 4.6)".
 std::string missing_effect_text(const CandidateResult& c);
 /// A candidate the data want only at a size no real unit has: "gyro_misalign
 /// would fit (log-likelihood +50.1) but only at 92 mrad, beyond the 35 mrad a real unit has: ...".
