@@ -18,6 +18,8 @@ void CoarseAlignment::configure(const AlignmentConfig& cfg) {
   status_ = AlignStatus::WaitingForRest;
   q_now_ = Eigen::Quaterniond::Identity();
   carried_s_ = 0.0;
+  field_ratio_ = NAN;
+  dip_difference_rad_ = NAN;
 }
 
 void CoarseAlignment::add_imu(const ImuSample& s, double dt) {
@@ -53,10 +55,11 @@ bool CoarseAlignment::add_gnss(const GnssObservation& z, double t_now, Alignment
   // whose horizontal angle is declination - yaw.
   if (cfg_.use_mag && r.has_mag) {
     const Eigen::Vector3d m_level = r.q_level * r.mean_mag_b_uT;
-    double sigma = 0.0;
-    const double heading = declination_for(m_level, z, sigma, out) - std::atan2(m_level.y(), m_level.x());
-    finish(z, t_now, heading, sigma, out);
-    return true;
+    double declination = 0.0, sigma = 0.0;
+    if (declination_for(m_level, z, declination, sigma, out)) {
+      finish(z, t_now, declination - std::atan2(m_level.y(), m_level.x()), sigma, out);
+      return true;
+    }
   }
   if (!z.has_velocity || z.v_ne_m_s.norm() < cfg_.min_course_speed_m_s) return false;
   const double turn = std::atan2(z.v_ne_m_s.y(), z.v_ne_m_s.x()) - euler_from_quat(q_now_).z();
@@ -65,36 +68,52 @@ bool CoarseAlignment::add_gnss(const GnssObservation& z, double t_now, Alignment
   return true;
 }
 
-double CoarseAlignment::declination_for(const Eigen::Vector3d& m_level, const GnssObservation& z, double& sigma,
-                                        AlignmentResult& out) const {
+bool CoarseAlignment::declination_for(const Eigen::Vector3d& m_level, const GnssObservation& z, double& declination,
+                                      double& sigma, AlignmentResult& out) {
   if (cfg_.declination_known) {
     out.heading_source = HeadingSource::MagnetometerGivenDeclination;
     sigma = cfg_.mag_heading_sigma_rad;
-    return out.declination_rad = cfg_.mag_declination_rad;
+    declination = out.declination_rad = cfg_.mag_declination_rad;
+    return true;
   }
   out.heading_source = HeadingSource::MagnetometerNoDeclination;
   sigma = cfg_.mag_unknown_declination_sigma_rad;
-  if (!cfg_.use_geomagnetic_model || !std::isfinite(z.decimal_year)) return 0.0;
+  declination = 0.0;
+  if (!cfg_.use_geomagnetic_model) return true;
+  // Not the Earth's field as the model knows it: an offset of tens of uT turns
+  // the horizontal field by any angle, so no sigma makes its heading honest.
+  // (A fix without a date, GGA before the first RMC, keeps the last verdict.)
+  const auto recognised = [&] {
+    return std::abs(field_ratio_ - 1.0) <= cfg_.geomag_max_field_ratio &&
+           std::abs(dip_difference_rad_) <= cfg_.geomag_max_dip_rad;
+  };
+  if (!std::isfinite(z.decimal_year)) return std::isnan(field_ratio_) || recognised();
   const geomag::GeomagneticField f = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, z.decimal_year);
   const double dip = std::atan2(m_level.z(), m_level.head<2>().norm());
-  out.field_ratio = m_level.norm() / f.total_uT;
-  out.dip_difference_rad = dip - f.inclination_rad;
-  if (std::abs(out.field_ratio - 1.0) > cfg_.geomag_max_field_ratio ||
-      std::abs(out.dip_difference_rad) > cfg_.geomag_max_dip_rad) {
-    return 0.0;  // not the Earth's field as the model knows it: no declination from it
-  }
+  field_ratio_ = m_level.norm() / f.total_uT;
+  dip_difference_rad_ = dip - f.inclination_rad;
+  if (!recognised()) return false;
   out.heading_source = HeadingSource::MagnetometerModelDeclination;
   sigma = cfg_.mag_heading_sigma_rad;
-  return out.declination_rad = f.declination_rad;
+  declination = out.declination_rad = f.declination_rad;
+  return true;
 }
 
-double CoarseAlignment::mag_heading(const Eigen::Quaterniond& q_nb, const Eigen::Vector3d& mag_b_uT,
-                                    const GnssObservation& z, double& sigma, AlignmentResult& out) const {
+void CoarseAlignment::record_field_check(AlignmentResult& out) const {
+  out.field_ratio = field_ratio_;
+  out.dip_difference_rad = dip_difference_rad_;
+}
+
+bool CoarseAlignment::mag_heading(const Eigen::Quaterniond& q_nb, const Eigen::Vector3d& mag_b_uT,
+                                  const GnssObservation& z, double& heading, double& sigma, AlignmentResult& out) {
   // The field in the levelled (yaw 0) frame is Rz(-yaw) F_n, whose horizontal angle is declination - yaw.
   const double yaw = euler_from_quat(q_nb).z();
   const Eigen::Quaterniond q_level = Eigen::Quaterniond(Eigen::AngleAxisd(-yaw, Eigen::Vector3d::UnitZ())) * q_nb;
   const Eigen::Vector3d m_level = q_level * mag_b_uT;
-  return declination_for(m_level, z, sigma, out) - std::atan2(m_level.y(), m_level.x());
+  double declination = 0.0;
+  if (!declination_for(m_level, z, declination, sigma, out)) return false;
+  heading = declination - std::atan2(m_level.y(), m_level.x());
+  return true;
 }
 
 bool CoarseAlignment::align_in_motion(const GnssObservation& z, double t_now, AlignmentResult& out) {
@@ -109,9 +128,8 @@ bool CoarseAlignment::align_in_motion(const GnssObservation& z, double t_now, Al
     finish_in_motion(z, t_now, s, yaw_now, s.att_sigma_rad.z(), out);
     return true;
   }
-  if (cfg_.use_mag && have_mag_) {
-    double sigma = 0.0;
-    const double heading = mag_heading(s.q_nb, last_mag_b_uT_, z, sigma, out);
+  double heading = 0.0, sigma = 0.0;
+  if (cfg_.use_mag && have_mag_ && mag_heading(s.q_nb, last_mag_b_uT_, z, heading, sigma, out)) {
     finish_in_motion(z, t_now, s, heading, sigma, out);
     return true;
   }
@@ -127,6 +145,7 @@ bool CoarseAlignment::align_in_motion(const GnssObservation& z, double t_now, Al
 void CoarseAlignment::finish_in_motion(const GnssObservation& z, double t_now, const InMotionSolution& s,
                                        double yaw, double yaw_sigma, AlignmentResult& out) {
   const double turn = yaw - euler_from_quat(s.q_nb).z();
+  record_field_check(out);
   out.nav.q_nb = (Eigen::Quaterniond(Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ())) * s.q_nb).normalized();
   out.at_rest = false;
   out.att_sigma_rad = {s.att_sigma_rad.x(), s.att_sigma_rad.y(), yaw_sigma};
@@ -167,6 +186,7 @@ void CoarseAlignment::finish(const GnssObservation& z, double t_now, double turn
   out.nav.h_m = z.h_m;
   out.nav.t_s = t_now;
   out.temp_ref_degC = r.temp_degC;
+  record_field_check(out);
   status_ = AlignStatus::Aligned;
 }
 

@@ -10,10 +10,12 @@
 //       declination (sigma a few deg), given, or else from the World Magnetic
 //       Model at the fix's position and date when the field the sensor
 //       measures is the Earth's (its strength and dip within
-//       geomag_max_field_ratio / geomag_max_dip_rad of the model's: a field
-//       bent by uncalibrated hard iron or made up by a simulator is not),
-//       or without it (sigma covers any declination; the Earth-field states
-//       and GNSS motion refine it);
+//       geomag_max_field_ratio / geomag_max_dip_rad of the model's), or
+//       without a date to ask the model (sigma covers any declination; the
+//       Earth-field states and GNSS motion refine it). A field the model does
+//       not recognise (bent by an uncalibrated hard iron of tens of uT, a
+//       local anomaly) may point anywhere: no heading from it; the alignment
+//       waits for the GNSS motion as without a magnetometer;
 //     - in motion, the in-motion alignment's own heading once the velocity
 //       has changed enough to show it; else the magnetometer; else, after
 //       course_wait_s of tilt without either, the GNSS course;
@@ -103,13 +105,19 @@ class CoarseAlignment {
   void finish_in_motion(const GnssObservation& z, double t_now_s, const InMotionSolution& s, double yaw_rad,
                         double yaw_sigma_rad, AlignmentResult& out);
   /// Heading [rad] from a body-frame field and an attitude whose tilt is known,
-  /// with the declination chosen by declination_for (source and sigma into `out`).
-  double mag_heading(const Eigen::Quaterniond& q_nb, const Eigen::Vector3d& mag_b_uT, const GnssObservation& z,
-                     double& sigma_rad, AlignmentResult& out) const;
+  /// with the declination chosen by declination_for (source and sigma into `out`);
+  /// false when declination_for says the field gives no heading.
+  bool mag_heading(const Eigen::Quaterniond& q_nb, const Eigen::Vector3d& mag_b_uT, const GnssObservation& z,
+                   double& heading_rad, double& sigma_rad, AlignmentResult& out);
   /// The declination for a field measured in the levelled frame at the fix z:
-  /// given, the model's when the field is the Earth's, or none (0, wide sigma).
-  double declination_for(const Eigen::Vector3d& m_level_uT, const GnssObservation& z, double& sigma_rad,
-                         AlignmentResult& out) const;
+  /// given, the model's when the field is the Earth's, or none (0, wide sigma)
+  /// without a date to ask the model. False when the model does not recognise
+  /// the field (its heading may be off by any angle).
+  bool declination_for(const Eigen::Vector3d& m_level_uT, const GnssObservation& z, double& declination_rad,
+                       double& sigma_rad, AlignmentResult& out);
+  /// The last field check against the model (NaN: none), kept for the result
+  /// whichever source the heading finally came from.
+  void record_field_check(AlignmentResult& out) const;
 
   AlignmentConfig cfg_;
   AlignStatus status_ = AlignStatus::WaitingForRest;
@@ -121,6 +129,7 @@ class CoarseAlignment {
   double tilt_since_s_ = -1.0;  // first in-motion solution with a good tilt (-1: none yet)
   Eigen::Quaterniond q_now_ = Eigen::Quaterniond::Identity();  // rest attitude (yaw 0) carried by the gyros
   double carried_s_ = 0.0;                                      // since the end of the rest
+  double field_ratio_ = NAN, dip_difference_rad_ = NAN;         // the last field check against the model
 };
 
 }  // namespace sinu::est
