@@ -16,8 +16,10 @@ void CoarseAlignment::configure(const AlignmentConfig& cfg) {
   have_mag_ = false;
   tilt_since_s_ = -1.0;
   status_ = AlignStatus::WaitingForRest;
-  q_now_ = Eigen::Quaterniond::Identity();
-  carried_s_ = 0.0;
+  q_now_ = q_still_ = Eigen::Quaterniond::Identity();
+  carried_s_ = carried_still_s_ = 0.0;
+  have_still_ = false;
+  still_windows_ = 0;
   field_ratio_ = NAN;
   dip_difference_rad_ = NAN;
 }
@@ -31,6 +33,11 @@ void CoarseAlignment::add_imu(const ImuSample& s, double dt) {
   }
   if (s.has_temp) last_temp_degC_ = s.temp_degC;
   rest_.add(s, dt);
+  if (have_still_) {
+    q_still_ = (q_still_ * quat_from_rotation_vector((s.angular_rate_b_rad_s - still_rest_.mean_rate_b_rad_s) * dt))
+                   .normalized();
+    carried_still_s_ += dt;
+  }
   if (!rest_.has_estimate()) return;
   status_ = AlignStatus::Levelled;
   if (rest_.at_rest()) {  // still at rest: the levelling itself is the attitude
@@ -43,8 +50,34 @@ void CoarseAlignment::add_imu(const ImuSample& s, double dt) {
   carried_s_ += dt;
 }
 
+void CoarseAlignment::check_rest(const GnssObservation& z) {
+  if (!z.has_velocity || !rest_.has_estimate()) return;
+  if (z.v_ne_m_s.norm() < cfg_.rest_contradicted_m_s) {
+    if (!rest_.at_rest()) return;
+    have_still_ = true;  // the rest as it is now, confirmed
+    still_rest_ = rest_.estimate();
+    still_windows_ = rest_.windows();
+    q_still_ = q_now_;
+    carried_still_s_ = 0.0;
+    return;
+  }
+  // Moving: a window that began after the last still fix was no rest.
+  if (have_still_ && rest_.windows() == still_windows_) return;
+  if (have_still_) {
+    rest_.restore(still_rest_);
+    q_now_ = q_still_;
+    carried_s_ = carried_still_s_;
+    return;
+  }
+  if (rest_.at_rest() || rest_.windows() > 1) {
+    rest_.forget();
+    status_ = AlignStatus::WaitingForRest;
+  }
+}
+
 bool CoarseAlignment::add_gnss(const GnssObservation& z, double t_now, AlignmentResult& out) {
   if (status_ == AlignStatus::Aligned || !z.has_position) return false;
+  check_rest(z);
   if (status_ == AlignStatus::WaitingForRest || !rest_.at_rest()) {
     // Moving (or never at rest): the in-motion alignment may finish first.
     if (align_in_motion(z, t_now, out)) return true;
@@ -157,7 +190,7 @@ void CoarseAlignment::finish_in_motion(const GnssObservation& z, double t_now, c
   out.nav.h_m = z.h_m;
   out.nav.t_s = t_now;
   // Horizontal velocity from the fix; vertical unknown (NMEA has none): a climb's few m/s.
-  out.vel_sigma_m_s = {z.sigma_vel_m_s, z.sigma_vel_m_s, 3.0};
+  out.vel_sigma_m_s = {z.sigma_vel_m_s, z.sigma_vel_m_s, cfg_.climb_sigma_m_s};
   out.temp_ref_degC = last_temp_degC_;
   status_ = AlignStatus::Aligned;
 }
@@ -179,6 +212,8 @@ void CoarseAlignment::finish(const GnssObservation& z, double t_now, double turn
   out.att_sigma_rad = {tilt, tilt, yaw_sigma};
   // Levelled at rest and aligned on the next fix, or at the course speed a few s later.
   out.vel_sigma_m_s = Eigen::Vector3d::Constant(std::max(0.5, z.sigma_vel_m_s));
+  // Moving since the rest (aligned on the course): it may be climbing, and NMEA has no vertical velocity.
+  if (!rest_.at_rest()) out.vel_sigma_m_s.z() = cfg_.climb_sigma_m_s;
   out.nav.q_nb = (rot_down * q_now_).normalized();
   out.nav.v_n_m_s = z.has_velocity ? Eigen::Vector3d(z.v_ne_m_s.x(), z.v_ne_m_s.y(), 0.0) : Eigen::Vector3d::Zero();
   out.nav.lat_rad = z.lat_rad;

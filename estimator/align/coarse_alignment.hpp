@@ -21,6 +21,11 @@
 //       course_wait_s of tilt without either, the GNSS course;
 //     - at rest without a magnetometer, the GNSS course once the speed
 //       passes min_course_speed_m_s (sigma covers crab and sideslip).
+// A rest window the GNSS contradicts (a fix at rest_contradicted_m_s or
+// faster while it lasts, or after it with no still fix since it began) was a
+// steady acceleration (rest_levelling.hpp): the levelling goes back to the
+// rest of the last still fix, its attitude carried by the gyros since, or,
+// with no still fix yet, to none (the in-motion alignment takes over).
 // Status: WaitingForRest (no tilt yet), Levelled (tilt known, waiting for a
 // heading), Aligned.
 #include <cmath>
@@ -51,6 +56,8 @@ struct AlignmentConfig {
   bool use_geomagnetic_model = true;
   double geomag_max_field_ratio = 0.15;    // | |m| / F_model - 1 |: residual hard iron, local anomaly
   double geomag_max_dip_rad = 0.087;       // 5 deg between the measured and the model's inclination
+  double climb_sigma_m_s = 3.0;            // vertical velocity aligned in motion: NMEA has none
+  double rest_contradicted_m_s = 1.0;      // a fix this fast: not at rest (a receiver at rest reads < 0.3)
 };
 
 /// Where the first heading came from (AlignmentResult, the replay's summary).
@@ -113,6 +120,8 @@ class CoarseAlignment {
   /// given, the model's when the field is the Earth's, or none (0, wide sigma)
   /// without a date to ask the model. False when the model does not recognise
   /// the field (its heading may be off by any angle).
+  /// A fix's speed against the rest windows since the last still fix (see the header).
+  void check_rest(const GnssObservation& z);
   bool declination_for(const Eigen::Vector3d& m_level_uT, const GnssObservation& z, double& declination_rad,
                        double& sigma_rad, AlignmentResult& out);
   /// The last field check against the model (NaN: none), kept for the result
@@ -129,6 +138,12 @@ class CoarseAlignment {
   double tilt_since_s_ = -1.0;  // first in-motion solution with a good tilt (-1: none yet)
   Eigen::Quaterniond q_now_ = Eigen::Quaterniond::Identity();  // rest attitude (yaw 0) carried by the gyros
   double carried_s_ = 0.0;                                      // since the end of the rest
+  // The rest as the last still fix saw it, and its attitude carried since.
+  bool have_still_ = false;
+  RestEstimate still_rest_;
+  long still_windows_ = 0;
+  Eigen::Quaterniond q_still_ = Eigen::Quaterniond::Identity();
+  double carried_still_s_ = 0.0;
   double field_ratio_ = NAN, dip_difference_rad_ = NAN;         // the last field check against the model
 };
 

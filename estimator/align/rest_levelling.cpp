@@ -10,6 +10,7 @@ namespace sinu::est {
 void RestLevelling::configure(const RestConfig& cfg) {
   cfg_ = cfg;
   has_estimate_ = false;
+  windows_ = 0;
   restart();
 }
 
@@ -18,6 +19,17 @@ void RestLevelling::restart() {
   since_snapshot_s_ = 0.0;
   have_ema_ = false;
   at_rest_ = false;
+}
+
+void RestLevelling::restore(const RestEstimate& e) {
+  est_ = e;
+  has_estimate_ = true;
+  restart();
+}
+
+void RestLevelling::forget() {
+  has_estimate_ = false;
+  restart();
 }
 
 bool RestLevelling::moving(const ImuSample& s, double dt) {
@@ -78,6 +90,7 @@ void RestLevelling::add(const ImuSample& s, double dt) {
     restart();
     return;
   }
+  if (!at_rest_) ++windows_;
   at_rest_ = true;
   estimate_from(now_);
 }

@@ -13,6 +13,12 @@
 // acceleration does not. The samples just before the onset are already
 // touched by it, so the estimate kept is the window as it was at least
 // `motion_tau_s` earlier.
+//
+// A steady acceleration without rotation is, to an accelerometer, a tilt: a
+// take-off run at 2.8 m/s^2 held for the window's 2 s looks like a rest
+// 16 deg nose-up with 0.4 m/s^2 of bias along gravity. Only another sensor
+// can tell (coarse_alignment.hpp: the GNSS speed), and restore() or forget()
+// then undo the windows since.
 #include "estimator/ins/imu_sample.hpp"
 
 #include <Eigen/Geometry>
@@ -50,6 +56,12 @@ class RestLevelling {
   /// The latest sample belonged to the current (valid) rest window.
   bool at_rest() const { return at_rest_; }
   const RestEstimate& estimate() const { return est_; }
+  /// Rest windows seen so far (one more each time a window reaches window_s).
+  long windows() const { return windows_; }
+  /// Back to an earlier estimate (the windows since were no rest); a new window starts.
+  void restore(const RestEstimate& e);
+  /// No rest seen after all; a new window starts.
+  void forget();
 
  private:
   struct Sums {
@@ -68,6 +80,7 @@ class RestLevelling {
   Eigen::Vector3d ema_f_ = Eigen::Vector3d::Zero(), ema_w_ = Eigen::Vector3d::Zero();
   bool have_ema_ = false;
   bool has_estimate_ = false, at_rest_ = false;
+  long windows_ = 0;
   RestEstimate est_;
 };
 
