@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "host_tests/support/read_json.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
@@ -23,11 +24,6 @@ std::string bench_session(const TempDir& tmp, int seconds) {
   EXPECT_EQ(run_sinu({"convert", dir, raw}).exit_code, 0);
   EXPECT_EQ(run_sinu({"convert", raw, q}).exit_code, 0);
   return q;
-}
-
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
 }
 
 TEST(Bench, AStillSessionIsCalibratedAndItsCalibJsonGoesWhereFlyReadsIt) {

@@ -15,21 +15,16 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
-#include <fstream>
 #include <string>
 
 #include "host_tests/support/dataset_faults.hpp"
 #include "host_tests/support/nav_error.hpp"
+#include "host_tests/support/read_json.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
 namespace sinu::test {
 namespace {
-
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
 
 class AirStart : public ::testing::TestWithParam<int> {};
 

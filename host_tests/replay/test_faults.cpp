@@ -10,7 +10,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -19,6 +18,7 @@
 #include "estimator/nav/nav_health.hpp"
 #include "host_tests/support/dataset_faults.hpp"
 #include "host_tests/support/nav_error.hpp"
+#include "host_tests/support/read_json.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
@@ -43,11 +43,6 @@ double recovered_at(const ErrorSeries& s, const ErrorSeries& clean, double from)
     if (ok) return s.t[i];
   }
   return NAN;
-}
-
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
 }
 
 class Faults : public ::testing::Test {

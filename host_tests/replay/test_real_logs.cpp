@@ -19,17 +19,13 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "host_tests/support/read_json.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/shared_data.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
 namespace sinu::test {
 namespace {
-
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
 
 /// The first truth.csv time with a horizontal speed above `speed_m_s`.
 double first_moving_s(const std::string& truth_csv, double speed_m_s) {

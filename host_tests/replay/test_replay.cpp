@@ -13,6 +13,7 @@
 #include "firmware/host/replay/replay_files.hpp"
 #include "host_tests/support/alloc_counter.hpp"
 #include "host_tests/support/nav_error.hpp"
+#include "host_tests/support/read_json.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
@@ -33,11 +34,6 @@ double first_t(const std::string& ds) {
   std::getline(in, line);
   std::getline(in, line);
   return std::stod(line.substr(0, line.find(',')));
-}
-
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
 }
 
 TEST(Replay, WritesNavInnovationsAndSummary) {

@@ -15,6 +15,7 @@
 
 #include "firmware/host/replay/replay_files.hpp"
 #include "host_tests/support/alloc_counter.hpp"
+#include "host_tests/support/read_json.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/shared_data.hpp"
 #include "host_tests/support/temp_dir.hpp"
@@ -25,11 +26,6 @@ namespace {
 void spit(const std::string& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary);
   out << bytes;
-}
-
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
 }
 
 std::size_t count_lines(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }

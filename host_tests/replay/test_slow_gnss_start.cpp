@@ -11,20 +11,15 @@
 // a climb's sigma.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "host_tests/support/read_json.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
 namespace sinu::test {
 namespace {
-
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
 
 TEST(SlowGnssStart, InsGpsOnlyWithAFixEveryTenToThirtySecondsFromPowerOnStaysConverged) {
   TempDir dir;
