@@ -24,6 +24,13 @@ void CoarseAlignment::configure(const AlignmentConfig& cfg) {
   dip_difference_rad_ = NAN;
 }
 
+namespace {
+/// An attitude carried one sample by the gyros, less the rest's bias.
+Eigen::Quaterniond carried(const Eigen::Quaterniond& q, const ImuSample& s, const RestEstimate& rest, double dt) {
+  return (q * quat_from_rotation_vector((s.angular_rate_b_rad_s - rest.mean_rate_b_rad_s) * dt)).normalized();
+}
+}  // namespace
+
 void CoarseAlignment::add_imu(const ImuSample& s, double dt) {
   if (status_ == AlignStatus::Aligned) return;
   in_motion_.add_imu(s, dt);
@@ -34,8 +41,7 @@ void CoarseAlignment::add_imu(const ImuSample& s, double dt) {
   if (s.has_temp) last_temp_degC_ = s.temp_degC;
   rest_.add(s, dt);
   if (have_still_) {
-    q_still_ = (q_still_ * quat_from_rotation_vector((s.angular_rate_b_rad_s - still_rest_.mean_rate_b_rad_s) * dt))
-                   .normalized();
+    q_still_ = carried(q_still_, s, still_rest_, dt);
     carried_still_s_ += dt;
   }
   if (!rest_.has_estimate()) return;
@@ -45,8 +51,7 @@ void CoarseAlignment::add_imu(const ImuSample& s, double dt) {
     carried_s_ = 0.0;
     return;
   }
-  const Eigen::Vector3d w = s.angular_rate_b_rad_s - rest_.estimate().mean_rate_b_rad_s;
-  q_now_ = (q_now_ * quat_from_rotation_vector(w * dt)).normalized();
+  q_now_ = carried(q_now_, s, rest_.estimate(), dt);
   carried_s_ += dt;
 }
 
@@ -62,8 +67,8 @@ void CoarseAlignment::check_rest(const GnssObservation& z) {
     return;
   }
   // Moving: a window that began after the last still fix was no rest.
-  if (have_still_ && rest_.windows() == still_windows_) return;
   if (have_still_) {
+    if (rest_.windows() == still_windows_) return;
     rest_.restore(still_rest_);
     q_now_ = q_still_;
     carried_s_ = carried_still_s_;
