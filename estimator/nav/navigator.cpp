@@ -206,6 +206,15 @@ void Navigator::process(const ImuSample& s) {
   if (horizontal_accel_m_s2_ < cfg_.yaw_observable_accel_m_s2 &&
       filter_.P()(yaw, yaw) > cfg_.yaw_freeze_sigma_rad * cfg_.yaw_freeze_sigma_rad) {
     frozen_.set(static_cast<std::size_t>(yaw));
+    // Without a magnetometer to see the heading, nor the errors of the gyros
+    // that turn it (the axes near vertical): their estimate is integrated
+    // into the heading as surely as an update would move it.
+    if (!mag_started_ || s.t_s - last_mag_fused_t_s_ > cfg_.mag_timeout_s) {
+      const Eigen::Matrix3d C = nav_.C_nb();
+      for (Eigen::Index i = 0; i < 3; ++i) {
+        if (std::abs(C(2, i)) > cfg_.yaw_gyro_vertical_cos) filter_.add_axis_states(sensor_axis::kFirstGyro + i, frozen_);
+      }
+    }
   }
   // The latency is seen through the acceleration, which a gap leaves unknown.
   const Slice latency = filter_.layout().of(Effect::GpsLatency);

@@ -118,6 +118,7 @@ struct NavigatorConfig {
   // would otherwise make the filter grow confident of a heading it cannot see.
   double yaw_freeze_sigma_rad = 0.05;
   double yaw_observable_accel_m_s2 = 0.3;
+  double yaw_gyro_vertical_cos = 0.7;  // gyro axes within 45 deg of vertical are frozen with the yaw
   double gnss_timeout_s = 2.0;
   double mag_timeout_s = 1.0;
 };
