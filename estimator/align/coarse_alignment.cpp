@@ -13,6 +13,7 @@ void CoarseAlignment::configure(const AlignmentConfig& cfg) {
   cfg_ = cfg;
   rest_.configure(cfg.rest);
   in_motion_.configure(cfg.in_motion);
+  position_velocity_.configure(cfg.position_velocity);
   have_mag_ = false;
   tilt_since_s_ = -1.0;
   status_ = AlignStatus::WaitingForRest;
@@ -57,7 +58,12 @@ void CoarseAlignment::add_imu(const ImuSample& s, double dt) {
 
 void CoarseAlignment::check_rest(const GnssObservation& z) {
   if (!z.has_velocity || !rest_.has_estimate()) return;
-  if (z.v_ne_m_s.norm() < cfg_.rest_contradicted_m_s) {
+  const double speed = z.v_ne_m_s.norm();
+  // Differenced fixes are noisy: moving only beyond their noise.
+  if (z.velocity_from_positions && speed >= cfg_.rest_contradicted_m_s &&
+      speed < cfg_.rest_contradicted_m_s + 2.0 * z.sigma_vel_m_s)
+    return;
+  if (speed < cfg_.rest_contradicted_m_s) {
     if (!rest_.at_rest()) return;
     have_still_ = true;  // the rest as it is now, confirmed
     still_rest_ = rest_.estimate();
@@ -80,8 +86,10 @@ void CoarseAlignment::check_rest(const GnssObservation& z) {
   }
 }
 
-bool CoarseAlignment::add_gnss(const GnssObservation& z, double t_now, AlignmentResult& out) {
-  if (status_ == AlignStatus::Aligned || !z.has_position) return false;
+bool CoarseAlignment::add_gnss(const GnssObservation& fix, double t_now, AlignmentResult& out) {
+  if (status_ == AlignStatus::Aligned || !fix.has_position) return false;
+  GnssObservation z = fix;
+  position_velocity_.fill(z);
   check_rest(z);
   if (status_ == AlignStatus::WaitingForRest || !rest_.at_rest()) {
     // Moving (or never at rest): the in-motion alignment may finish first.
@@ -102,7 +110,11 @@ bool CoarseAlignment::add_gnss(const GnssObservation& z, double t_now, Alignment
   if (!z.has_velocity || z.v_ne_m_s.norm() < cfg_.min_course_speed_m_s) return false;
   const double turn = std::atan2(z.v_ne_m_s.y(), z.v_ne_m_s.x()) - euler_from_quat(q_now_).z();
   out.heading_source = HeadingSource::GnssCourse;
-  finish(z, t_now, turn, cfg_.course_heading_sigma_rad, out);
+  // A course from differenced fixes carries their noise and lag across the track too.
+  const double sigma = z.velocity_from_positions
+                           ? std::hypot(cfg_.course_heading_sigma_rad, z.sigma_vel_m_s / z.v_ne_m_s.norm())
+                           : cfg_.course_heading_sigma_rad;
+  finish(z, t_now, turn, sigma, out);
   return true;
 }
 

@@ -20,7 +20,9 @@
 //       has changed enough to show it; else the magnetometer; else, after
 //       course_wait_s of tilt without either, the GNSS course;
 //     - at rest without a magnetometer, the GNSS course once the speed
-//       passes min_course_speed_m_s (sigma covers crab and sideslip).
+//       passes min_course_speed_m_s (sigma covers crab and sideslip); from
+//       differenced fixes when the receiver sends no velocity
+//       (position_velocity.hpp).
 // A rest window the GNSS contradicts (a fix at rest_contradicted_m_s or
 // faster while it lasts, or after it with no still fix since it began) was a
 // steady acceleration (rest_levelling.hpp): the levelling goes back to the
@@ -32,6 +34,7 @@
 #include <cstdint>
 
 #include "estimator/align/in_motion_alignment.hpp"
+#include "estimator/align/position_velocity.hpp"
 #include "estimator/align/rest_levelling.hpp"
 #include "estimator/ekf/aiding/gnss_observation.hpp"
 #include "estimator/ins/imu_sample.hpp"
@@ -44,6 +47,7 @@ enum class AlignStatus { WaitingForRest, Levelled, Aligned };
 struct AlignmentConfig {
   RestConfig rest;
   InMotionAlignmentConfig in_motion;
+  PositionVelocityConfig position_velocity;  // a receiver without velocity sentences
   double course_wait_s = 5.0;              // in motion, no heading from the velocity change: the course after this
   double min_course_speed_m_s = 3.0;       // course from a GNSS receiver is unreliable below walking speed
   double course_heading_sigma_rad = 0.15;  // heading minus course: crab in wind, a car's sideslip
@@ -132,6 +136,7 @@ class CoarseAlignment {
   AlignStatus status_ = AlignStatus::WaitingForRest;
   RestLevelling rest_;
   InMotionAlignment in_motion_;
+  PositionVelocity position_velocity_;
   Eigen::Vector3d last_mag_b_uT_ = Eigen::Vector3d::Zero();
   bool have_mag_ = false;
   double last_temp_degC_ = 0.0;

@@ -22,7 +22,8 @@ constexpr double kFeedbackStepRad = 0.01;
 constexpr double kCarryYawSigmaRad = 20.0 * std::numbers::pi / 180.0;
 
 bool usable(const GnssObservation& z) {
-  return z.has_position && z.has_velocity && z.v_ne_m_s.allFinite() && std::isfinite(z.lat_rad) &&
+  return z.has_position && z.has_velocity && !z.velocity_from_positions && z.v_ne_m_s.allFinite() &&
+         std::isfinite(z.lat_rad) &&
          std::isfinite(z.h_m);
 }
 }  // namespace
