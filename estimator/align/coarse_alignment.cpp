@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "estimator/earth/geomagnetic_model.hpp"
 #include "estimator/earth/wgs84.hpp"
@@ -132,20 +133,31 @@ bool CoarseAlignment::declination_for(const Eigen::Vector3d& m_level, const Gnss
   if (!cfg_.use_geomagnetic_model) return true;
   // Not the Earth's field as the model knows it: an offset of tens of uT turns
   // the horizontal field by any angle, so no sigma makes its heading honest.
-  // (A fix without a date, GGA before the first RMC, keeps the last verdict.)
   const auto recognised = [&] {
     return std::abs(field_ratio_ - 1.0) <= cfg_.geomag_max_field_ratio &&
            std::abs(dip_difference_rad_) <= cfg_.geomag_max_dip_rad;
   };
-  if (!std::isfinite(z.decimal_year)) return std::isnan(field_ratio_) || recognised();
-  const geomag::GeomagneticField f = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, z.decimal_year);
+  // Without a date (GGA or VTG only, no RMC or ZDA): the model over its whole
+  // span, its middle, the declination's drift to either end in the sigma
+  // (0.1-0.2 deg a year at most sites: a few deg instead of 20).
+  const bool dated = std::isfinite(z.decimal_year);
+  const double year = dated ? z.decimal_year : 0.5 * (geomag::kValidFromYear + geomag::kValidUntilYear);
+  const geomag::GeomagneticField f = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, year);
+  double drift = 0.0;
+  if (!dated) {
+    for (const double end : {geomag::kValidFromYear, geomag::kValidUntilYear - 1e-3}) {
+      const double d = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, end).declination_rad;
+      drift = std::max(drift, std::abs(std::remainder(d - f.declination_rad, 2.0 * std::numbers::pi)));
+    }
+  }
   const double dip = std::atan2(m_level.z(), m_level.head<2>().norm());
   field_ratio_ = m_level.norm() / f.total_uT;
   dip_difference_rad_ = dip - f.inclination_rad;
   if (!recognised()) return false;
-  out.heading_source = HeadingSource::MagnetometerModelDeclination;
-  sigma = cfg_.mag_heading_sigma_rad;
+  out.heading_source = dated ? HeadingSource::MagnetometerModelDeclination : HeadingSource::MagnetometerUndatedModel;
+  sigma = std::hypot(cfg_.mag_heading_sigma_rad, drift);
   declination = out.declination_rad = f.declination_rad;
+  out.declination_drift_rad = drift;
   return true;
 }
 

@@ -10,9 +10,9 @@
 //       declination (sigma a few deg), given, or else from the World Magnetic
 //       Model at the fix's position and date when the field the sensor
 //       measures is the Earth's (its strength and dip within
-//       geomag_max_field_ratio / geomag_max_dip_rad of the model's), or
-//       without a date to ask the model (sigma covers any declination; the
-//       Earth-field states and GNSS motion refine it). A field the model does
+//       geomag_max_field_ratio / geomag_max_dip_rad of the model's; a fix
+//       without a date takes the model's mid-span, the declination's drift
+//       over the span in the sigma). A field the model does
 //       not recognise (bent by an uncalibrated hard iron of tens of uT, a
 //       local anomaly) may point anywhere: no heading from it; the alignment
 //       waits for the GNSS motion as without a magnetometer;
@@ -68,6 +68,7 @@ struct AlignmentConfig {
 enum class HeadingSource : std::uint8_t {
   MagnetometerGivenDeclination,  // the magnetometer with the configured declination
   MagnetometerModelDeclination,  // the magnetometer with the World Magnetic Model's declination
+  MagnetometerUndatedModel,      // the same without a date: the model's mid-span, its drift in the sigma
   MagnetometerNoDeclination,     // the magnetometer, declination unknown (wide sigma)
   InMotion,                      // the in-motion alignment's velocity-change fit
   GnssCourse,                    // the GNSS course
@@ -76,6 +77,8 @@ inline constexpr const char* heading_source_name(HeadingSource s) {
   switch (s) {
     case HeadingSource::MagnetometerGivenDeclination: return "magnetometer, given declination";
     case HeadingSource::MagnetometerModelDeclination: return "magnetometer, World Magnetic Model declination";
+    case HeadingSource::MagnetometerUndatedModel:
+      return "magnetometer, World Magnetic Model declination (no date: the model's 2015-2030 span)";
     case HeadingSource::MagnetometerNoDeclination: return "magnetometer, declination unknown";
     case HeadingSource::InMotion: return "in-motion alignment (velocity change)";
     case HeadingSource::GnssCourse: return "GNSS course";
@@ -95,6 +98,7 @@ struct AlignmentResult {
   double temp_ref_degC = 0.0;
   HeadingSource heading_source = HeadingSource::GnssCourse;
   double declination_rad = NAN;   // the declination used (magnetometer headings with one)
+  double declination_drift_rad = 0.0;  // without a date: its change to either end of the model's span
   // The measured field against the model's, when the model was consulted:
   // its strength ratio and dip difference (why it was or was not used).
   double field_ratio = NAN, dip_difference_rad = NAN;
@@ -121,8 +125,9 @@ class CoarseAlignment {
   bool mag_heading(const Eigen::Quaterniond& q_nb, const Eigen::Vector3d& mag_b_uT, const GnssObservation& z,
                    double& heading_rad, double& sigma_rad, AlignmentResult& out);
   /// The declination for a field measured in the levelled frame at the fix z:
-  /// given, the model's when the field is the Earth's, or none (0, wide sigma)
-  /// without a date to ask the model. False when the model does not recognise
+  /// given, or the model's when the field is the Earth's (without a date, at
+  /// the middle of its span), or none (0, wide sigma) with the model switched
+  /// off. False when the model does not recognise
   /// the field (its heading may be off by any angle).
   /// A fix's speed against the rest windows since the last still fix (see the header).
   void check_rest(const GnssObservation& z);

@@ -409,7 +409,8 @@ void Navigator::fuse_magnetometer(const ImuSample& s) {
     if (std::isfinite(alignment_result_.declination_rad) && filter_.layout().has(Effect::MagEarthField)) {
       const UpdateResult r = fuse_measurement(
           filter_.P(), dx_,
-          declination_measurement(filter_, alignment_result_.declination_rad, cfg_.declination_sigma_rad, 1e9),
+          declination_measurement(filter_, alignment_result_.declination_rad,
+                                  std::hypot(cfg_.declination_sigma_rad, alignment_result_.declination_drift_rad), 1e9),
           frozen_);
       if (r.accepted) filter_.feedback(dx_, nav_);
     }

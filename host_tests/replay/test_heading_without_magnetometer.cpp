@@ -7,8 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,21 +17,6 @@
 
 namespace sinu::test {
 namespace {
-
-/// The last nav.csv row's value of column `name`.
-double last_value(const std::string& nav_csv, const std::string& name) {
-  std::ifstream in(nav_csv);
-  std::string header, line, last;
-  std::getline(in, header);
-  while (std::getline(in, line))
-    if (!line.empty()) last = line;
-  std::stringstream h(header), v(last);
-  std::string col, val;
-  while (std::getline(h, col, ',') && std::getline(v, val, ','))
-    if (col == name) return std::stod(val);
-  ADD_FAILURE() << name << " not in " << nav_csv;
-  return NAN;
-}
 
 TEST(HeadingWithoutMagnetometer, AStraightLegDoesNotTurnTheHeadingBeyondItsSigma) {
   for (const char* seed : {"21", "5"}) {
@@ -52,7 +35,7 @@ TEST(HeadingWithoutMagnetometer, AStraightLegDoesNotTurnTheHeadingBeyondItsSigma
     // (measured 8 deg against a 38-deg sigma; before, 55 against 16).
     const ErrorSeries e = error_series(out + "/nav.csv", flight + "/truth.csv");
     ASSERT_FALSE(e.err_yaw_deg.empty());
-    EXPECT_LT(std::abs(e.err_yaw_deg.back()), 3.0 * last_value(out + "/nav.csv", "sigma_att_d_deg")) << seed;
+    EXPECT_LT(std::abs(e.err_yaw_deg.back()), 3.0 * nav_value(out + "/nav.csv", "sigma_att_d_deg", NavRow::Last)) << seed;
   }
 }
 

@@ -1,5 +1,7 @@
 #include "host_tests/support/nav_error.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -87,6 +89,23 @@ std::uint32_t flags_between(const ErrorSeries& s, double from, double to) {
   for (std::size_t i = 0; i < s.t.size(); ++i)
     if (s.t[i] >= from && s.t[i] < to) m |= s.flags[i];
   return m;
+}
+
+double nav_value(const std::string& nav_csv, const std::string& name, NavRow row) {
+  std::ifstream in(nav_csv);
+  std::string header, line, chosen;
+  std::getline(in, header);
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    chosen = line;
+    if (row == NavRow::First) break;
+  }
+  std::stringstream h(header), v(chosen);
+  std::string col, val;
+  while (std::getline(h, col, ',') && std::getline(v, val, ','))
+    if (col == name) return std::stod(val);
+  ADD_FAILURE() << name << " not in " << nav_csv;
+  return NAN;
 }
 
 }  // namespace sinu::test

@@ -21,5 +21,9 @@ double rms_between(const ErrorSeries& s, double from, double to);  // of err_h
 double rms_of(const std::vector<double>& t, const std::vector<double>& x, double from, double to);
 double max_between(const ErrorSeries& s, double from, double to);
 std::uint32_t flags_between(const ErrorSeries& s, double from, double to);
+/// Column `name` of nav.csv's first or last data row (NaN and a test failure
+/// when the column is missing).
+enum class NavRow { First, Last };
+double nav_value(const std::string& nav_csv, const std::string& name, NavRow row);
 
 }  // namespace sinu::test
