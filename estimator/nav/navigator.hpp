@@ -93,13 +93,10 @@ struct NavigatorConfig {
   NoiseAdapterConfig mag_noise{true, 60.0, 0.1, 5.0};
   double mag_period_s = 0.1;          // fuse at most this often (10 Hz)
   // A magnetometer rejected this long while the GNSS velocity vouches for the
-  // attitude is disturbed by a new field of the vehicle's own (a payload
-  // switched on, a new motor current): the hard iron is re-anchored to what
-  // the sensor reads now (PX4 EKF2 realigns its field in flight likewise).
-  // Shorter streaks are transients the hard-iron state and the learnt noise
-  // ride out: uav_log171's take-off (2.6 s) re-anchored after 1 s took the
-  // moment's yaw error into the iron (attitude 4.32 against 3.56 deg).
-  double mag_reanchor_after_s = 3.0;
+  // attitude is disturbed by a new field of the vehicle's own (motor currents
+  // after take-off, a payload switched on): the hard iron is re-anchored to
+  // what the sensor reads now (PX4 EKF2 realigns its field in flight likewise).
+  double mag_reanchor_after_s = 1.0;
   double covariance_period_s = 0.1;  // covariance prediction at most this far apart (0: every sample)
   // Faults.
   double clip_error_fraction = 0.5;   // 1 sigma of the unknown true value of a clipped axis, x full scale
