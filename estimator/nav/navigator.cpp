@@ -209,7 +209,7 @@ void Navigator::process(const ImuSample& s) {
     // Without a magnetometer to see the heading, nor the errors of the gyros
     // that turn it (the axes near vertical): their estimate is integrated
     // into the heading as surely as an update would move it.
-    if (!mag_started_ || s.t_s - last_mag_fused_t_s_ > cfg_.mag_timeout_s) {
+    if (!mag_live(s.t_s)) {
       const Eigen::Matrix3d C = nav_.C_nb();
       for (Eigen::Index i = 0; i < 3; ++i) {
         if (std::abs(C(2, i)) > cfg_.yaw_gyro_vertical_cos) filter_.add_axis_states(sensor_axis::kFirstGyro + i, frozen_);
@@ -502,7 +502,7 @@ void Navigator::update_health(double t_now, double dt) {
     if (!in_timeout_) ++counters_.gnss_timeouts;
   }
   in_timeout_ = timeout;
-  if (mag_started_ && t_now - last_mag_sample_t_s_ > cfg_.mag_timeout_s) f |= nav_flag::kMagTimeout;
+  if (mag_started_ && !mag_live(t_now)) f |= nav_flag::kMagTimeout;
   if (recovery_.lost(t_now)) {
     f |= nav_flag::kLost;
     if (counters_.lost_total_s == 0.0) counters_.first_lost_t_s = t_now;

@@ -187,6 +187,8 @@ class Navigator {
     const double buffer_s = period_s_ > 0.0 ? static_cast<double>(kImuBufferCapacity - 2) * period_s_ : cfg_.horizon_s;
     return std::max(cfg_.horizon_s, std::min(cfg_.max_horizon_s, buffer_s));
   }
+  /// A field sample within mag_timeout_s (the magnetometer states on).
+  bool mag_live(double t_s) const { return mag_started_ && t_s - last_mag_sample_t_s_ <= cfg_.mag_timeout_s; }
   /// The largest latency the longest horizon can serve (two IMU periods of margin).
   double max_gps_latency_s() const { return std::max(0.0, horizon_limit_s() - 2.0 * period_s_ - 0.01); }
   void recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas);

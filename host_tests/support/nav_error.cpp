@@ -100,10 +100,9 @@ double nav_value(const std::string& nav_csv, const std::string& name, NavRow row
     chosen = line;
     if (row == NavRow::First) break;
   }
-  std::stringstream h(header), v(chosen);
-  std::string col, val;
-  while (std::getline(h, col, ',') && std::getline(v, val, ','))
-    if (col == name) return std::stod(val);
+  const auto h = cells(header), v = cells(chosen);
+  const auto at = static_cast<std::size_t>(std::find(h.begin(), h.end(), name) - h.begin());
+  if (at < v.size()) return std::stod(v[at]);
   ADD_FAILURE() << name << " not in " << nav_csv;
   return NAN;
 }
