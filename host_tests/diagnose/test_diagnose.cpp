@@ -92,6 +92,28 @@ TEST(Diagnose, NamesAHiddenLeverArm) {
   EXPECT_LT(d["after"]["rmse_pos_h_m"].get<double>(), d["before"]["rmse_pos_h_m"].get<double>());
 }
 
+// The next flight of a unit starts from the model file of the last one: what
+// it already knows is not a candidate again, and --apply writes it back with
+// the new flight's estimates next to what this flight found (before, the
+// written file held only the new effects: a third flight lost the first's).
+TEST(Diagnose, ASecondFlightFromAModelFileKeepsTheKnownEffects) {
+  TempDir dir;
+  const std::string known = dir.write(
+      "known.json", R"({"effects": {"gyro_misalign": {"estimate": [0, 0, 0, 0, 0, 0],
+                                                       "sigma": [0.005, 0.005, 0.005, 0.005, 0.005, 0.005]}}})");
+  const auto d = diagnose(dir, R"({"lever_arm": [0.9, -0.5, -0.6]})", {"--model-file", known, "--apply"});
+  ASSERT_GE(d["missing_effects"].size(), 1u) << d.dump(1);
+  EXPECT_EQ(d["missing_effects"][0], "lever_arm");
+  for (const auto& c : d["rounds"][0]["candidates"]) EXPECT_NE(c["effect"], "gyro_misalign") << "tried again";
+  std::ifstream in((dir.path() / "diag" / "model.json").string());
+  const auto m = nlohmann::json::parse(in);
+  ASSERT_TRUE(m["effects"].contains("gyro_misalign")) << m.dump(1);
+  ASSERT_TRUE(m["effects"].contains("lever_arm")) << m.dump(1);
+  // This flight's estimate of the known effect, not the file's prior: the
+  // turns of a 10-minute flight pin a misalignment to 1-3 mrad.
+  EXPECT_LT(m["effects"]["gyro_misalign"]["sigma"][0].get<double>(), 0.005);
+}
+
 TEST(Diagnose, NamesAHiddenSoftIronAndTheHeadingRecovers) {
   TempDir dir;
   const auto d = diagnose(dir, R"({"mag_soft_iron": [[1.1, 0.03, 0], [0.03, 0.92, 0.02], [0, 0.02, 1.05]]})");

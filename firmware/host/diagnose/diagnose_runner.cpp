@@ -176,6 +176,13 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
   std::error_code ec;
   fs::create_directories(o.out_dir, ec);
   est::EffectSet model = o.replay.unit.effects;
+  // Effects known from an earlier flight (--model-file) are part of the model:
+  // not tried again as candidates, and written back by --apply with this
+  // flight's estimates (the next flight starts from all of them).
+  if (!o.replay.unit.model_path.empty()) {
+    std::array<est::EffectPrior, est::kEffectCount> known_priors{};
+    if (!board::read_model_file(o.replay.unit.model_path, model, known_priors, error)) return false;
+  }
   RunScore current;
   const std::string baseline_dir = (fs::path(o.out_dir) / "baseline").string();
   DiagnoseOptions tuned = o;
