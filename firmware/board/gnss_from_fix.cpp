@@ -28,7 +28,7 @@ bool gnss_from_fix(const drivers::GpsFix& fix, const GnssSigmaConfig& cfg, est::
   } else {
     sig = Eigen::Vector3d::Constant(cfg.no_dop_sigma_m);
   }
-  for (Eigen::Index i = 0; i < 3; ++i) sig(i) = std::max(sig(i), cfg.min_sigma_m);
+  for (Eigen::Index i = 0; i < 3; ++i) sig(i) = std::max(sig(i) * cfg.position_sigma_scale, cfg.min_sigma_m);
   out.sigma_ned_m = sig;
   if (fix.date) {
     out.decimal_year = est::geomag::decimal_year(fix.date->year, fix.date->month, fix.date->day,

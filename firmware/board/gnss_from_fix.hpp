@@ -11,6 +11,7 @@ struct GnssSigmaConfig {
   double uere_m = 2.5;            // user equivalent range error for sigma = DOP * UERE
   double min_sigma_m = 0.2;      // floor: below it time tagging (20 ms at 10 m/s) and lever arms dominate
   double velocity_sigma_m_s = 0.2;
+  double position_sigma_scale = 1.0;  // the stated sigma (GST, DOP x UERE) times this (diagnose's noise finding)
   double no_dop_sigma_m = 5.0;    // neither GST nor HDOP
 };
 

@@ -42,6 +42,10 @@ void NavigationCliOptions::add_to(CLI::App& sub) {
                  "learnt from the innovations starting here")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  sub.add_option("--gps-pos-sigma-scale", opt.unit.sigma.position_sigma_scale,
+                 "GNSS position sigma: the receiver's (GST, or HDOP x UERE) times this (diagnose says when it is off)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   sub.add_option("--mag-sigma", opt.unit.mag_sigma_uT,
                  "Magnetometer noise per axis, 1 sigma [uT]; given: kept fixed, else learnt from the innovations")
       ->capture_default_str()

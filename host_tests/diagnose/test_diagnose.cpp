@@ -249,6 +249,30 @@ TEST(Diagnose, ANoiseLevelSetTooSmallIsNamedAsNoiseNotAsAnEffect) {
   EXPECT_NE(r.out.find("x too small", at), std::string::npos) << r.out;
 }
 
+// A receiver whose GST is generous (the real quadcopter's u-blox: NIS 0.05)
+// hides effects the filter would see; diagnose says by how much and replays
+// with the stated sigma scaled back. Here the simulator's receiver states its
+// sigma honestly and the replay takes it 4x too large.
+TEST(Diagnose, AGenerousReceiverSigmaIsFoundAndScaledBack) {
+  TempDir dir;
+  const std::string ds = dir.file("flight"), out = dir.file("diag");
+  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", ds, "--seed", "9", "--duration", "600"}).exit_code, 0);
+  const auto r = run_sinu({"diagnose", "--in", ds, "--gps-latency", "0.045", "--rounds", "1", "--gps-pos-sigma-scale",
+                           "4", "--quiet", "--out", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string said = "noise: GNSS position sigma (the receiver's GST, or HDOP x UERE) is ";
+  const std::size_t at = r.out.find(said);
+  ASSERT_NE(at, std::string::npos) << r.out;
+  // 4x too large, read from the innovations; the 0.2-m sigma floor and the
+  // receiver's correlated error (a state whose prior scales with the sigma)
+  // keep the NIS from being exactly 1/16: 2.5-6 tells "about 4" from no finding.
+  const double factor = std::stod(r.out.substr(at + said.size()));
+  EXPECT_GT(factor, 2.5);
+  EXPECT_LT(factor, 6.0);
+  EXPECT_NE(r.out.find("x too large", at), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("diagnosed with --gps-pos-sigma-scale ", at), std::string::npos) << r.out;
+}
+
 // What this flight cannot test is skipped, with the reason: no temperature
 // in imu.csv, no temperature coefficients.
 TEST(Diagnose, CandidatesTheDataCannotTestAreSkippedWithTheReason) {

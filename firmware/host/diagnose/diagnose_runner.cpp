@@ -189,8 +189,10 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
   if (!replay_and_score(tuned.replay, model, baseline_dir, true, current, error)) return false;
   out.mag_sigma_given_uT = out.mag_sigma_uT = o.replay.unit.mag_sigma_uT;
   out.vel_sigma_given_m_s = out.vel_sigma_m_s = o.replay.unit.sigma.velocity_sigma_m_s;
+  out.pos_sigma_scale_given = out.pos_sigma_scale = o.replay.unit.sigma.position_sigma_scale;
   // The magnetometer's and the GNSS velocity's sigmas are guesses (GST reports
-  // only the position's). A too-generous sigma hides effects: when a source's
+  // only the position's), and a receiver's GST can be generous too (the real
+  // quadcopter's u-blox: NIS 0.05, where a 0.5-m lever arm hid). A too-generous sigma hides effects: when a source's
   // NIS per component is below 0.5, scale its sigma by sqrt(NIS) (the factor
   // for white noise) so it is 1. Upwards only by what every flight phase shows
   // (a noise level set too small: a missing effect shows where the vehicle
@@ -206,8 +208,10 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     if (floor > 1.5) return std::sqrt(floor);
     return 1.0;
   };
-  const double mag_factor = sigma_factor(2), vel_factor = sigma_factor(1);
-  if (o.tune_mag_sigma && (mag_factor != 1.0 || vel_factor != 1.0)) {
+  const double mag_factor = sigma_factor(2), vel_factor = sigma_factor(1), pos_factor = sigma_factor(0);
+  if (o.tune_mag_sigma && (mag_factor != 1.0 || vel_factor != 1.0 || pos_factor != 1.0)) {
+    tuned.replay.unit.sigma.position_sigma_scale = out.pos_sigma_scale =
+        o.replay.unit.sigma.position_sigma_scale * pos_factor;
     tuned.replay.unit.mag_sigma_uT = out.mag_sigma_uT = std::max(0.05, o.replay.unit.mag_sigma_uT * mag_factor);
     tuned.replay.unit.sigma.velocity_sigma_m_s = out.vel_sigma_m_s =
         std::max(0.01, o.replay.unit.sigma.velocity_sigma_m_s * vel_factor);

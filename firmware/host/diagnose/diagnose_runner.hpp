@@ -74,6 +74,7 @@ struct Diagnosis {
   double mag_sigma_uT = 0.0;         // the magnetometer sigma used (tuned from the baseline's NIS)
   double mag_sigma_given_uT = 0.0;   // as configured
   double vel_sigma_m_s = 0.0, vel_sigma_given_m_s = 0.0;  // GNSS velocity sigma, likewise
+  double pos_sigma_scale = 1.0, pos_sigma_scale_given = 1.0;  // on the receiver's stated position sigma, likewise
   double process_noise_scale = 1.0;  // chosen by likelihood (1 with a calib.json)
   std::vector<Round> rounds;
   std::vector<est::Effect> missing;  // in the order found

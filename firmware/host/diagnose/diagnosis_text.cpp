@@ -108,6 +108,13 @@ std::vector<std::string> tuned_noise_findings(const Diagnosis& d) {
     out.push_back(tuned_line("magnetometer", d.mag_sigma_given_uT, d.mag_sigma_uT, "uT"));
   if (d.vel_sigma_m_s != d.vel_sigma_given_m_s)
     out.push_back(tuned_line("GNSS velocity", d.vel_sigma_given_m_s, d.vel_sigma_m_s, "m/s"));
+  if (d.pos_sigma_scale != d.pos_sigma_scale_given) {
+    const double f = d.pos_sigma_scale / d.pos_sigma_scale_given;
+    out.push_back("GNSS position sigma (the receiver's GST, or HDOP x UERE) is " +
+                  format_number("%.2f", f > 1.0 ? f : 1.0 / f) + "x too " + (f > 1.0 ? "small" : "large") +
+                  " (NIS per component " + format_number("%.2f", f * f) + "); diagnosed with --gps-pos-sigma-scale " +
+                  format_number("%.3g", d.pos_sigma_scale));
+  }
   return out;
 }
 
