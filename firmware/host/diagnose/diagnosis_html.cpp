@@ -387,6 +387,12 @@ std::string comparison_table(const Round& before, const Round& after, bool chang
     out += metric_row("NIS per component, " + escape(kSourceNames[k]),
                       cells([k](const Round& r) { return nis_cell(r.stats.source[k]); }));
   }
+  for (std::size_t k = 0; k < kSources; ++k) {
+    out += metric_row("innovation whiteness, " + escape(kSourceNames[k]) + " (lag-1 autocorrelation, 0 when white)",
+                      cells([k](const Round& r) {
+                        return r.stats.source[k].count ? format_number("%.2f", r.stats.source[k].lag1()) : "-";
+                      }));
+  }
   out += metric_row("innovations' negative log-likelihood",
                     cells([](const Round& r) { return format_number("%.1f", r.stats.total_nll()); }));
   return out + "</table>\n";

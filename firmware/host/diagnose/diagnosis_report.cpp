@@ -126,10 +126,16 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
           "vibration rectification, a receiver whose error changes with the satellites in view.\n";
   }
   if (!d.rounds.empty()) {
+    auto whiteness = [](const Round& r) {
+      nlohmann::json w = nlohmann::json::object();
+      for (std::size_t k = 0; k < kSources; ++k)
+        if (r.stats.source[k].count) w[kSourceNames[k]] = r.stats.source[k].lag1();
+      return w;
+    };
     j["before"] = {{"rmse_pos_h_m", d.rounds.front().rmse_pos_h_m}, {"nll", d.rounds.front().stats.total_nll()},
-                   {"outage_drift_h_m", d.rounds.front().outage_drift_h_m}};
+                   {"outage_drift_h_m", d.rounds.front().outage_drift_h_m}, {"lag1", whiteness(d.rounds.front())}};
     j["after"] = {{"rmse_pos_h_m", d.rounds.back().rmse_pos_h_m}, {"nll", d.rounds.back().stats.total_nll()},
-                  {"outage_drift_h_m", d.rounds.back().outage_drift_h_m},
+                  {"outage_drift_h_m", d.rounds.back().outage_drift_h_m}, {"lag1", whiteness(d.rounds.back())},
                   {"effects", effect_list(d.rounds.back().model)}};
   }
   std::ofstream js(o.out_dir + "/diagnosis.json");

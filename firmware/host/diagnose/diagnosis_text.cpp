@@ -162,6 +162,12 @@ std::string before_after_text(const Round& before, const Round& after) {
     out += std::string(" ") + kSourceNames[k] + " " + nis_cell(before.stats.source[k]) + " -> " +
            nis_cell(after.stats.source[k]);
   }
+  out += "; innovation whiteness (lag-1 autocorrelation, 0 when white)";
+  for (std::size_t k = 0; k < kSources; ++k) {
+    if (!before.stats.source[k].count) continue;
+    out += std::string(" ") + kSourceNames[k] + " " + format_number("%.2f", before.stats.source[k].lag1()) + " -> " +
+           format_number("%.2f", after.stats.source[k].lag1());
+  }
   return out;
 }
 

@@ -51,6 +51,12 @@ void InnovationStatsListener::on_innovation(const est::InnovationRecord& rec) {
     if (!(s > 0.0)) continue;  // no predicted sigma: nothing to score
     const double y = rec.result.innovation(i);
     stats_.source[k].add(y, s, rec.result.accepted);
+    if (i < 3) {
+      const auto c = static_cast<std::size_t>(i);
+      if (have_prev_[k][c]) stats_.source[k].lag_sum += (y / s) * prev_z_[k][c];
+      prev_z_[k][c] = y / s;
+      have_prev_[k][c] = true;
+    }
     stats_.by_phase[k][static_cast<std::size_t>(phases_.phase())].add(y, s, rec.result.accepted);
   }
 }

@@ -24,7 +24,11 @@ struct ComponentStats {
   double mean_z() const { return count ? z_sum / static_cast<double>(count) : 0.0; }
   double nis() const { return count ? z2_sum / static_cast<double>(count) : 0.0; }
   double z_sum = 0.0;      // sum of y / s (a bias shows as a mean far from 0)
+  double lag_sum = 0.0;    // sum of z_t z_{t-1}, consecutive innovations of one component
   void add(double y, double s, bool accepted);
+  /// Lag-1 autocorrelation of z: the innovations' whiteness (0 when white, as a
+  /// right model's are; a real log's slowly wandering receiver error shows as 0.6-0.98).
+  double lag1() const { return z2_sum > 0.0 ? lag_sum / z2_sum : 0.0; }
 };
 
 struct InnovationStats {
@@ -58,6 +62,8 @@ class InnovationStatsListener final : public replay::ReplayListener {
  private:
   InnovationStats stats_;
   PhaseTracker phases_;
+  std::array<std::array<double, 3>, kSources> prev_z_{};  // per source and component, for lag_sum
+  std::array<std::array<bool, 3>, kSources> have_prev_{};
 };
 
 }  // namespace sinu::diagnose
