@@ -181,16 +181,20 @@ def main():
         for r in sorted(pairs, key=lambda r: r["seed"]):
             out.append(f"| {', '.join(r['hidden'])} | {', '.join(r['named']) or 'nothing'} | {'yes' if correct(r) else 'no'} |")
         out.append(f"| **both found** | | **{ok} of {len(pairs)} ({100 * ok / len(pairs):.0f} %)** |")
-    text = "\n".join(out) + "\n"
-    if a.out == "-":
+    write_section(a.out, "diagnose_eval", "\n".join(out) + "\n")
+
+
+def write_section(path, marker, text):
+    """The text to stdout (path "-"), or into the file between `<!-- marker: begin -->` and
+    `<!-- marker: end -->` when it has them (docs/diagnose.md), else as the whole file."""
+    if path == "-":
         sys.stdout.write(text)
         return
-    # Into the file between the markers when it has them (docs/diagnose.md), else the whole file.
-    begin, end = "<!-- diagnose_eval: begin -->\n", "<!-- diagnose_eval: end -->"
-    old = open(a.out).read() if os.path.exists(a.out) else ""
+    begin, end = f"<!-- {marker}: begin -->\n", f"<!-- {marker}: end -->"
+    old = open(path).read() if os.path.exists(path) else ""
     if begin in old and end in old:
         text = old[:old.index(begin) + len(begin)] + text + old[old.index(end):]
-    open(a.out, "w").write(text)
+    open(path, "w").write(text)
 
 
 if __name__ == "__main__":
