@@ -269,7 +269,12 @@ def main():
     ap.add_argument("--nav", help="nav.csv or truth.csv with roll, pitch, yaw (needed by lever_arm)")
     ap.add_argument("--out", required=True)
     a = ap.parse_args()
-    fx = json.load(open(a.effects))
+    try:
+        fx = json.load(open(a.effects))
+    except (OSError, ValueError) as e:
+        raise SystemExit(f"inject_effect: {a.effects}: {e}")
+    if not isinstance(fx, dict):
+        raise SystemExit(f"inject_effect: {a.effects}: expected a JSON object of effects")
     fx = fx.get("effects", fx)
     known = {"accel_scale", "gyro_scale", "accel_misalign", "gyro_misalign", "gyro_g_sensitivity", "accel_temp_bias",
              "gyro_temp_bias", "mag_soft_iron", "mag_hard_iron", "lever_arm", "gps_latency"}
