@@ -94,11 +94,14 @@ std::string worst_cell(const InnovationStats& s) {
 
 std::vector<std::string> tuned_noise_findings(const Diagnosis& d) {
   // A noise level is a diagnosis too: which sigma, how far off, and why it is noise.
-  auto tuned_line = [](const char* what, double given, double used, const char* unit) {
+  // f = the sigma used / the sigma given: "2.03x too small (NIS per component 4.11"
+  auto off_by = [](double f) {
+    return format_number("%.2f", f > 1.0 ? f : 1.0 / f) + "x too " + (f > 1.0 ? "small" : "large") +
+           " (NIS per component " + format_number("%.2f", f * f);
+  };
+  auto tuned_line = [&](const char* what, double given, double used, const char* unit) {
     const double f = used / given;
-    std::string line = std::string(what) + " sigma " + format_number("%.3g", given) + " " + unit + " was set ";
-    line += format_number("%.2f", f > 1.0 ? f : 1.0 / f) + "x too " + (f > 1.0 ? "small" : "large") +
-            " (NIS per component " + format_number("%.2f", f * f);
+    std::string line = std::string(what) + " sigma " + format_number("%.3g", given) + " " + unit + " was set " + off_by(f);
     if (f > 1.0) line += ", alike in every flight phase: a noise level, not a missing effect";
     line += "); diagnosed with " + format_number("%.3g", used) + " " + unit;
     return line;
@@ -109,10 +112,8 @@ std::vector<std::string> tuned_noise_findings(const Diagnosis& d) {
   if (d.vel_sigma_m_s != d.vel_sigma_given_m_s)
     out.push_back(tuned_line("GNSS velocity", d.vel_sigma_given_m_s, d.vel_sigma_m_s, "m/s"));
   if (d.pos_sigma_scale != d.pos_sigma_scale_given) {
-    const double f = d.pos_sigma_scale / d.pos_sigma_scale_given;
     out.push_back("GNSS position sigma (the receiver's GST, or HDOP x UERE) is " +
-                  format_number("%.2f", f > 1.0 ? f : 1.0 / f) + "x too " + (f > 1.0 ? "small" : "large") +
-                  " (NIS per component " + format_number("%.2f", f * f) + "); diagnosed with --gps-pos-sigma-scale " +
+                  off_by(d.pos_sigma_scale / d.pos_sigma_scale_given) + "); diagnosed with --gps-pos-sigma-scale " +
                   format_number("%.3g", d.pos_sigma_scale));
   }
   return out;
