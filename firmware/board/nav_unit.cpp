@@ -50,6 +50,9 @@ bool NavUnit::init(const NavUnitConfig& c, est::NavObserver* observer, std::stri
   }
   cfg.effects = c.effects;
   if (!c.model_path.empty() && !read_model_file(c.model_path, cfg.effects, cfg.tuning.prior, error)) return false;
+  for (std::size_t e = 0; e < est::kEffectCount; ++e) {
+    if (c.relearn.has(static_cast<est::Effect>(e))) cfg.tuning.prior[e].given = false;
+  }
   cfg.use_mag = c.use_mag;
   cfg.vehicle = c.vehicle;
   cfg.mag_sigma_uT = c.mag_sigma_uT;

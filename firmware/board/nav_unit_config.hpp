@@ -21,6 +21,9 @@ struct NavUnitConfig {
   std::string denoise = "auto"; // auto: calib.json's denoiser (none without calib); none; WAVELET:LEVELS
   est::EffectSet effects = default_effects();
   std::string model_path;       // a model file (model_file.hpp): effects known from an earlier flight, added to `effects`
+  // Model-file effects learnt again from the vocabulary's prior instead of
+  // the file's value (diagnose asks: has it changed since? an antenna moved).
+  est::EffectSet relearn;
   // The fix's latency at arrival (initial value of the gps_latency state):
   // an NMEA epoch arrives some tens of ms after its time of validity.
   double gps_latency_s = 0.05;

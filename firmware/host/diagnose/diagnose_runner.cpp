@@ -85,6 +85,7 @@ bool outage_drifts(replay::ReplayOptions opt, const std::vector<replay::Outage>&
   opt.outages = outages;
   for (Round* r : {&d.rounds.front(), &d.rounds.back()}) {
     RunScore s;
+    opt.unit.relearn = r->relearnt;
     if (!replay_and_score(opt, r->model, "", false, s, error)) return false;
     r->outage_drift_h_m = s.outage_drift_h_m;
   }
@@ -177,12 +178,14 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
   fs::create_directories(o.out_dir, ec);
   est::EffectSet model = o.replay.unit.effects;
   // Effects known from an earlier flight (--model-file) are part of the model:
-  // not tried again as candidates, and written back by --apply with this
-  // flight's estimates (the next flight starts from all of them).
-  if (!o.replay.unit.model_path.empty()) {
-    std::array<est::EffectPrior, est::kEffectCount> known_priors{};
-    if (!board::read_model_file(o.replay.unit.model_path, model, known_priors, error)) return false;
-  }
+  // not tried again as new effects, and written back by --apply with this
+  // flight's estimates (the next flight starts from all of them). Each is a
+  // candidate of another kind: learnt again from the vocabulary's prior, it
+  // is named when this flight puts it elsewhere (an antenna moved, a
+  // magnetometer remounted): "changed since the model file".
+  std::array<est::EffectPrior, est::kEffectCount> known{};
+  if (!o.replay.unit.model_path.empty() && !board::read_model_file(o.replay.unit.model_path, model, known, error))
+    return false;
   RunScore current;
   const std::string baseline_dir = (fs::path(o.out_dir) / "baseline").string();
   DiagnoseOptions tuned = o;
@@ -238,21 +241,27 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
   for (int r = 0; r < o.rounds; ++r) {
     Round round;
     round.model = model;
+    round.relearnt = tuned.replay.unit.relearn;
     round.stats = current.stats;
     round.rmse_pos_h_m = current.rmse_pos_h_m;
     round.rmse_att_deg = current.rmse_att_deg;
     round.outage_drift_h_m = current.outage_drift_h_m;
     // The candidates this round tries, then their replays in parallel (one per
     // core; each reads the data itself and shares nothing but `tuned`).
-    std::vector<est::Effect> trials;
+    struct Trial {
+      est::Effect effect;
+      bool relearn;  // a model-file effect from its prior, else a new one
+    };
+    std::vector<Trial> trials;
     for (std::size_t e = 0; e < est::kEffectCount; ++e) {
       const auto effect = static_cast<est::Effect>(e);
+      if (known[e].given && !tuned.replay.unit.relearn.has(effect)) trials.push_back({effect, true});
       if (!o.candidates.has(effect) || model.has(effect)) continue;
       if (const std::string why = untestable_reason(effect, current.excitation); !why.empty()) {
         if (r == 0) out.skipped.push_back({effect, why});
         continue;
       }
-      trials.push_back(effect);
+      trials.push_back({effect, false});
     }
     std::vector<RunScore> scores(trials.size());
     std::vector<std::string> errors(trials.size());
@@ -262,12 +271,14 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     auto worker = [&] {
       for (std::size_t i = next++; i < trials.size(); i = next++) {
         est::EffectSet trial = model;
-        trial.add(trials[i]);
-        ok[i] = replay_and_score(tuned.replay, trial, "", false, scores[i], errors[i]) ? 1 : 0;
+        replay::ReplayOptions opt = tuned.replay;
+        if (trials[i].relearn) opt.unit.relearn.add(trials[i].effect);
+        else trial.add(trials[i].effect);
+        ok[i] = replay_and_score(opt, trial, "", false, scores[i], errors[i]) ? 1 : 0;
         const std::lock_guard<std::mutex> lock(progress);
         if (o.progress)
-          std::fprintf(stderr, "diagnose: round %d: %zu/%zu candidates (%s)\n", r + 1, ++done, trials.size(),
-                       est::spec(trials[i]).name);
+          std::fprintf(stderr, "diagnose: round %d: %zu/%zu candidates (%s%s)\n", r + 1, ++done, trials.size(),
+                       est::spec(trials[i].effect).name, trials[i].relearn ? ", re-learnt" : "");
       }
     };
     const std::size_t threads =
@@ -283,10 +294,12 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
       }
     }
     for (std::size_t i = 0; i < trials.size(); ++i) {
-      const est::Effect effect = trials[i];
+      const est::Effect effect = trials[i].effect;
+      const est::EffectPrior& file = known[static_cast<std::size_t>(effect)];
       const RunScore& score = scores[i];
       CandidateResult c;
       c.effect = effect;
+      c.changed = trials[i].relearn;
       c.nll_gain = current.stats.total_nll() - score.stats.total_nll();
       // The replay's innovation likelihood is already marginal over the effect's
       // states (they start from their prior and every innovation carries their
@@ -298,20 +311,27 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
         // Soft iron: a scale common to the three diagonal terms (xx yy zz) trades
         // against the Earth field's strength, itself a state, so it is no evidence
         // of soft iron; only the diagonal's differences and the cross terms are.
-        const double common_scale = effect == est::Effect::MagSoftIron
-                                        ? (eff.estimate[0] + eff.estimate[1] + eff.estimate[2]) / 3.0
-                                        : 0.0;
+        auto common = [&](auto& v) { return effect == est::Effect::MagSoftIron ? (v[0] + v[1] + v[2]) / 3.0 : 0.0; };
+        const double common_scale = common(eff.estimate), file_common = c.changed ? common(file.value) : 0.0;
         for (std::size_t k = 0; k < eff.estimate.size(); ++k) {
-          const double v = eff.estimate[k], sg = eff.sigma[k];
+          const double v = eff.estimate[k];
+          double sg = eff.sigma[k];
           c.estimate.push_back(v);
           c.sigma.push_back(sg);
           c.sigma_ratio.push_back(sg / est::spec(effect).initial_sigma);
           // Distance from what the model assumed without the states (the configured latency
-          // and lever arm, zero otherwise), in sigmas.
+          // and lever arm, zero otherwise), in sigmas; for a model-file effect
+          // learnt again, from the file's value in both sigmas.
           double prior = 0.0;
           if (effect == est::Effect::GpsLatency) prior = o.replay.unit.gps_latency_s;
           if (effect == est::Effect::LeverArm) prior = o.replay.unit.lever_arm_b_m(static_cast<Eigen::Index>(k));
           if (effect == est::Effect::MagSoftIron && k < 3) prior = common_scale;
+          if (c.changed) {
+            c.file_estimate.push_back(file.value[k]);
+            c.file_sigma.push_back(file.sigma[k]);
+            prior = file.value[k] + (k < 3 ? common_scale - file_common : 0.0);
+            sg = std::hypot(sg, file.sigma[k]);
+          }
           if (sg > 0.0) c.significance = std::max(c.significance, std::abs(v - prior) / sg);
           c.plausibility = std::max(c.plausibility, std::abs(v - (k < 3 ? common_scale : 0.0)) /
                                                         est::spec(effect).plausible_max);
@@ -335,14 +355,20 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     round.candidates = sorted;
     round.found = !round.candidates.empty() && round.candidates.front().explains(o.min_significance);
     if (round.found) {
-      model.add(round.candidates.front().effect);
-      out.missing.push_back(round.candidates.front().effect);
+      const CandidateResult& best = round.candidates.front();
+      if (best.changed) {
+        tuned.replay.unit.relearn.add(best.effect);
+        out.changed.push_back(best.effect);
+      } else {
+        model.add(best.effect);
+        out.missing.push_back(best.effect);
+      }
       current = std::move(scores[order.front()]);
     }
     out.rounds.push_back(std::move(round));
     if (!out.rounds.back().found) break;
   }
-  out.noise_findings = noise_findings(current.stats, !out.missing.empty());
+  out.noise_findings = noise_findings(current.stats, out.model_changed());
   // Candidates the last round could not pin down: say so, and what would.
   if (!out.rounds.empty()) {
     for (const CandidateResult& c : out.rounds.back().candidates) observability_notes(c, current.excitation, out.observability);
@@ -350,6 +376,7 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
   // The final model's score, for the "after" column.
   Round last;
   last.model = model;
+  last.relearnt = tuned.replay.unit.relearn;
   last.stats = current.stats;
   last.rmse_pos_h_m = current.rmse_pos_h_m;
   last.rmse_att_deg = current.rmse_att_deg;

@@ -41,6 +41,11 @@ struct DiagnoseOptions {
 
 struct CandidateResult {
   est::Effect effect{};
+  // A model-file effect learnt again from the vocabulary's prior (not the
+  // file's value): named when this flight says it has changed since (an
+  // antenna moved); its significance is then the distance from the file's value.
+  bool changed = false;
+  std::vector<double> file_estimate, file_sigma;  // the model file's value (changed candidates only)
   double nll_gain = 0.0;     // baseline NLL - NLL with the effect
   double evidence_threshold = 0.0;  // the log Bayes factor it must exceed (DiagnoseOptions::min_log_evidence)
   double significance = 0.0; // max |estimate - assumed value| / sigma
@@ -63,6 +68,7 @@ struct CandidateResult {
 
 struct Round {
   est::EffectSet model;             // the effects in the model this round starts from
+  est::EffectSet relearnt;          // model-file effects in it learnt again from their prior (found changed)
   InnovationStats stats;            // its score
   double rmse_pos_h_m = -1.0, rmse_att_deg = -1.0;
   double outage_drift_h_m = -1.0;   // RMS of the largest horizontal drift per --outage window (-1: none)
@@ -78,6 +84,8 @@ struct Diagnosis {
   double process_noise_scale = 1.0;  // chosen by likelihood (1 with a calib.json)
   std::vector<Round> rounds;
   std::vector<est::Effect> missing;  // in the order found
+  std::vector<est::Effect> changed;  // model-file effects this flight says have changed
+  bool model_changed() const { return !missing.empty() || !changed.empty(); }
   struct Skipped {
     est::Effect effect{};
     std::string reason;  // why the data cannot test it

@@ -312,7 +312,7 @@ std::string estimate_cell(const CandidateResult& c) {
 
 std::string candidate_row(const CandidateResult& c, double min_significance) {
   std::string out = "<tr class=\"" + verdict_class(c, min_significance) + "\"><td>" +
-                    escape(est::spec(c.effect).name) + "</td><td class=\"v\">" + escape(verdict_text(c, min_significance)) + "</td>";
+                    escape(candidate_name(c)) + "</td><td class=\"v\">" + escape(verdict_text(c, min_significance)) + "</td>";
   out += "<td>" + format_number("%.1f", c.nll_gain) + "</td><td>" + format_number("%.1f", c.evidence_threshold) + "</td><td>" +
          format_number("%.1f", c.significance) + "</td><td class=\"est\">" + estimate_cell(c) + "</td><td>" +
          escape(est::spec(c.effect).unit) + "</td><td class=\"nw\">";
@@ -328,7 +328,7 @@ std::string round_evidence(const Round& round, std::size_t index, double min_sig
                     escape(effect_list(round.model)) + ")</h3>\n";
   std::vector<svg::PairRow> rows;
   for (const CandidateResult& c : round.candidates)
-    rows.push_back({est::spec(c.effect).name, c.nll_gain, c.evidence_threshold, verdict_class(c, min_significance)});
+    rows.push_back({candidate_name(c), c.nll_gain, c.evidence_threshold, verdict_class(c, min_significance)});
   out += "<div class=\"legend\"><span><i class=\"sw explains\"></i>log-likelihood gain: explains the data</span>"
          "<span><i class=\"sw implausible\"></i>fits, but implausibly large</span><span><i class=\"sw no\"></i>does not "
          "explain it</span><span><i class=\"sw penalty\"></i>threshold</span></div>\n";
@@ -401,7 +401,7 @@ std::string comparison_table(const Round& before, const Round& after, bool chang
 std::string comparison_section(const Diagnosis& d) {
   std::string out = "<section id=\"comparison\"><h2>Before and after</h2>\n";
   if (d.rounds.empty()) return out + "</section>\n";
-  const bool changed = !d.missing.empty();
+  const bool changed = d.model_changed();
   out += changed ? "<p>The baseline model against the final one (the effects found added).</p>\n"
                  : "<p>No effect was added: the baseline is the final model.</p>\n";
   out += comparison_table(d.rounds.front(), d.rounds.back(), changed);
@@ -559,7 +559,7 @@ constexpr const char* kScript = R"JS(<script>
 )JS";
 
 std::string conclusion_class(const Diagnosis& d) {
-  if (!d.missing.empty()) return "conclusion found";
+  if (d.model_changed()) return "conclusion found";
   return d.noise_findings.empty() ? "conclusion" : "conclusion noise";
 }
 

@@ -22,18 +22,20 @@ std::string diagnosis_summary(const DiagnoseOptions& o, const Diagnosis& d) {
   for (const std::string& n : tuned_noise_findings(d)) out += "  noise: " + n + "\n";
   if (const std::string p = process_noise_text(d); !p.empty()) out += "  " + p + "\n";
   out += "  baseline model (" + effect_list(base.model) + "): fits worst in " + worst_cell(base.stats) + "\n";
-  if (d.missing.empty()) {
+  if (!d.model_changed()) {
     out += "  no candidate effect explains the misfit (see report.md for each candidate's score)\n";
   }
   for (const Round& round : d.rounds) {
-    if (round.found) out += "  missing effect: " + missing_effect_text(round.candidates.front()) + "\n";
+    if (round.found)
+      out += std::string(round.candidates.front().changed ? "  changed: " : "  missing effect: ") +
+             missing_effect_text(round.candidates.front()) + "\n";
   }
   for (const std::string& n : implausible_fits(d, o.min_significance)) out += "  not named: " + n + "\n";
   for (const std::string& n : d.noise_findings) out += "  noise: " + n + "\n";
   for (const Diagnosis::Skipped& s : d.skipped)
     out += "  not tested: " + std::string(est::spec(s.effect).name) + " (" + s.reason + ")\n";
   const Round& last = d.rounds.back();
-  if (!d.missing.empty()) {
+  if (d.model_changed()) {
     out += "  error before -> after: " + before_after_text(base, last) + "\n";
   }
   if (!d.model_file.empty())
@@ -85,7 +87,7 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
     nlohmann::json cands = nlohmann::json::array();
     for (const CandidateResult& c : round.candidates) {
       const auto e = static_cast<std::size_t>(c.effect);
-      md << "| " << est::kEffectNames[e] << (c.explains(o.min_significance) ? " **(explains)**" : "")
+      md << "| " << candidate_name(c) << (c.explains(o.min_significance) ? " **(explains)**" : "")
          << (c.implausible_fit(o.min_significance) ? " (fits, but implausibly large)" : "") << " | "
          << fmt("%.1f", c.nll_gain) << " | " << fmt("%.1f", c.evidence_threshold) << " | " << fmt("%.1f", c.significance)
          << " | " << estimate_text(c) << " | " << nis_cell(c.stats.source[0]) << " / " << nis_cell(c.stats.source[1])
@@ -93,7 +95,7 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
       cands.push_back({{"effect", est::kEffectNames[e]}, {"nll_gain", c.nll_gain}, {"evidence_threshold", c.evidence_threshold},
                        {"significance", c.significance}, {"estimate", c.estimate}, {"sigma", c.sigma},
                        {"explains", c.explains(o.min_significance)}, {"plausibility", c.plausibility},
-                       {"rmse_pos_h_m", c.rmse_pos_h_m}});
+                       {"rmse_pos_h_m", c.rmse_pos_h_m}, {"changed_since_model_file", c.changed}});
     }
     md << "\n";
     rounds.push_back({{"model", effect_list(round.model)}, {"found", round.found}, {"candidates", cands}});
@@ -102,6 +104,9 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
   nlohmann::json missing = nlohmann::json::array();
   for (est::Effect e : d.missing) missing.push_back(est::kEffectNames[static_cast<std::size_t>(e)]);
   j["missing_effects"] = missing;
+  nlohmann::json changed = nlohmann::json::array();
+  for (est::Effect e : d.changed) changed.push_back(est::kEffectNames[static_cast<std::size_t>(e)]);
+  j["changed_effects"] = changed;
   nlohmann::json skipped = nlohmann::json::array();
   if (!d.skipped.empty()) {
     md << "## Not tested: the data cannot tell\n\n";
@@ -120,7 +125,7 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
   j["weakly_observable"] = d.observability;
   j["noise_findings"] = d.noise_findings;
   md << "## Conclusion\n\n```\n" << diagnosis_summary(o, d) << "```\n";
-  if (d.missing.empty()) {
+  if (!d.model_changed()) {
     md << "\nNo effect the EKF can estimate explains the misfit. What the vocabulary does not cover: a\n"
           "magnetometer misfit that changes with heading beyond soft iron (a field that moves with the motors),\n"
           "vibration rectification, a receiver whose error changes with the satellites in view.\n";

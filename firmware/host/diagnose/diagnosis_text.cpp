@@ -39,19 +39,33 @@ std::string effect_list(const est::EffectSet& s) {
   return out.empty() ? "none" : out;
 }
 
-std::string estimate_component_text(const CandidateResult& c, std::size_t i, const char* plus_minus) {
-  const double scale = est::spec(c.effect).display_scale;
-  return format_number("%.4g", c.estimate[i] * scale) + " " + plus_minus + " " + format_number("%.2g", c.sigma[i] * scale);
+namespace {
+
+std::string value_text(est::Effect e, double value, double sigma, const char* plus_minus) {
+  const double scale = est::spec(e).display_scale;
+  return format_number("%.4g", value * scale) + " " + plus_minus + " " + format_number("%.2g", sigma * scale);
 }
 
-std::string estimate_text(const CandidateResult& c) {
+std::string vector_text(est::Effect e, const std::vector<double>& value, const std::vector<double>& sigma) {
   std::string out;
-  for (std::size_t i = 0; i < c.estimate.size(); ++i) {
+  for (std::size_t i = 0; i < value.size() && i < sigma.size(); ++i) {
     if (i) out += ", ";
-    out += estimate_component_text(c, i);
+    out += value_text(e, value[i], sigma[i], "+-");
   }
-  if (c.estimate.size() > 1) out = "[" + out + "]";
-  return out + " " + est::spec(c.effect).unit;
+  if (value.size() > 1) out = "[" + out + "]";
+  return out + " " + est::spec(e).unit;
+}
+
+}  // namespace
+
+std::string estimate_component_text(const CandidateResult& c, std::size_t i, const char* plus_minus) {
+  return value_text(c.effect, c.estimate[i], c.sigma[i], plus_minus);
+}
+
+std::string estimate_text(const CandidateResult& c) { return vector_text(c.effect, c.estimate, c.sigma); }
+
+std::string candidate_name(const CandidateResult& c) {
+  return std::string(est::spec(c.effect).name) + (c.changed ? " (re-learnt)" : "");
 }
 
 std::string nis_cell(const ComponentStats& s) { return s.count ? format_number("%.2f", s.nis()) : std::string("-"); }
@@ -126,7 +140,10 @@ std::string process_noise_text(const Diagnosis& d) {
 }
 
 std::string missing_effect_text(const CandidateResult& c) {
-  return std::string(est::spec(c.effect).name) + " = " + estimate_text(c) + " (innovation log-likelihood +" +
+  const std::string value = c.changed ? " has changed since the model file: " + estimate_text(c) + ", was " +
+                                            vector_text(c.effect, c.file_estimate, c.file_sigma)
+                                      : " = " + estimate_text(c);
+  return std::string(est::spec(c.effect).name) + value + " (innovation log-likelihood +" +
          format_number("%.1f", c.nll_gain) + ", threshold " + format_number("%.1f", c.evidence_threshold) + ")";
 }
 
@@ -181,7 +198,8 @@ std::string conclusion_sentence(const Diagnosis& d) {
     found += missing_effect_text(round.candidates.front());
   }
   if (!found.empty()) {
-    return std::string(d.missing.size() > 1 ? "Missing effects: " : "Missing effect: ") + found +
+    const char* what = d.missing.empty() ? "Changed: " : d.missing.size() > 1 ? "Missing effects: " : "Missing effect: ";
+    return what + found +
            ". Error before -> after: " + before_after_text(d.rounds.front(), d.rounds.back()) + ".";
   }
   const std::string error = error_text(d.rounds.back());

@@ -37,7 +37,11 @@ std::vector<std::string> tuned_noise_findings(const Diagnosis& d);
 /// Without calib.json: the scale chosen for the built-in sensor model ("" if none).
 std::string process_noise_text(const Diagnosis& d);
 
-/// "gyro_misalign = [...] mrad (innovation log-likelihood +104.0, threshold 4.6)".
+/// The candidate's name in tables: "lever_arm", or "lever_arm (re-learnt)"
+/// for a model-file effect learnt again from its prior.
+std::string candidate_name(const CandidateResult& c);
+/// "gyro_misalign = [...] mrad (innovation log-likelihood +104.0, threshold 4.6)";
+/// a changed one: "lever_arm has changed since the model file: [...] m, was [...] m (...)".
 std::string missing_effect_text(const CandidateResult& c);
 /// A candidate the data want only at a size no real unit has: "gyro_misalign
 /// would fit (log-likelihood +50.1) but only at 92 mrad, beyond the 35 mrad a real unit has: ...".
