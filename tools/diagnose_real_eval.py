@@ -14,8 +14,8 @@ prior: the model files' sigmas come from this same data, once per pass).
 Right: the injected effect is named first (for effects the model carries,
 the defaults' `gps_latency` and `mag_hard_iron` and the log's own: nothing
 named, and the estimate moves by the injected value). Effects the log cannot
-carry are skipped (no magnetometer: the irons; temperature within 2 degC:
-the temperature coefficients). The error against the log's own reference
+test are skipped, as diagnose itself says ("not tested": no magnetometer,
+the irons; temperature within 2 degC, the temperature coefficients). The error against the log's own reference
 (the autopilot's EKF, or the car's RTK) is given for a replay with the log's
 effects and from the model file diagnose wrote.
 
@@ -26,7 +26,6 @@ effects and from the model file diagnose wrote.
 import argparse
 import collections
 import concurrent.futures
-import csv
 import json
 import os
 import shutil
@@ -41,8 +40,6 @@ EFFECTS = ["accel_scale", "gyro_scale", "accel_misalign", "gyro_misalign", "leve
 CARRIED = {"mag_hard_iron", "gps_latency"}
 # Effects whose injected value is the state's, times this (ppm for the scales), component for component.
 SIMPLE_UNITS = {"gps_latency": 1.0, "lever_arm": 1.0, "mag_hard_iron": 1.0, "accel_scale": 1e-6, "gyro_scale": 1e-6}
-MAGNETIC = {"mag_hard_iron", "mag_soft_iron"}
-THERMAL = {"accel_temp_bias", "gyro_temp_bias"}
 
 
 def run(cmd):
@@ -65,15 +62,14 @@ def draws(sinu, work, per_effect, first_seed):
     return got
 
 
-def log_facts(log):
-    """(has a magnetometer, temperature span [degC]) of imu.csv."""
-    has_mag, tmin, tmax = False, float("inf"), float("-inf")
-    for r in csv.DictReader(open(os.path.join(log, "imu.csv"), newline="")):
-        has_mag = has_mag or bool(r.get("mx", "").strip())
-        if r.get("temp", "").strip():
-            t = float(r["temp"])
-            tmin, tmax = min(tmin, t), max(tmax, t)
-    return has_mag, (tmax - tmin if tmax >= tmin else 0.0)
+def untestable(diagnosis_dir):
+    """{effect: why} the log cannot test, as diagnose itself said ("not tested"; the
+    hard iron, always carried with a magnetometer, goes with the soft iron)."""
+    skipped = {s["effect"]: s["reason"]
+               for s in json.load(open(os.path.join(diagnosis_dir, "diagnosis.json"))).get("skipped", [])}
+    if "mag_soft_iron" in skipped:
+        skipped["mag_hard_iron"] = skipped["mag_soft_iron"]
+    return skipped
 
 
 def replay(sinu, data, truth, model_args, out):
@@ -169,12 +165,12 @@ def main():
             model = ["--model-file", os.path.join(base, "model.json")]
             if not new:
                 break
-        has_mag, temp_span = log_facts(log)
-        bases[name] = (named, has_mag, temp_span)
+        skipped = untestable(f"{plain}_diag0")
+        bases[name] = (named, skipped)
         base_args = ["--effects", ",".join(named)] if named else []
         base_estimates = replay(a.sinu, plain, os.path.join(log, "truth.csv"), base_args, base + "_replay")[2]
         for effect in EFFECTS:
-            if (effect in MAGNETIC and not has_mag) or (effect in THERMAL and temp_span < 2.0):
+            if effect in skipped:
                 continue
             for seed, value in drawn[effect]:
                 jobs.append((log, base_args, base_estimates,
@@ -202,12 +198,14 @@ def main():
            "for a replay with those effects and from the model file diagnose wrote (medians).", ""]
     for log in logs:
         name = os.path.basename(log.rstrip("/"))
-        named, has_mag, temp_span = bases[name]
+        named, skipped = bases[name]
         rs = [r for r in rows if r["log"] == name]
+        why = collections.defaultdict(list)
+        for effect, reason in skipped.items():
+            why[reason].append(effect)
         out += [f"`{name}` as it is: {', '.join(named) or 'nothing'} named"
-                + ("" if has_mag else "; no magnetometer: the irons skipped")
-                + (f"; temperature spans {temp_span:.1f} degC: the temperature coefficients skipped"
-                   if temp_span < 2.0 else "") + ".", "",
+                + "".join(f"; not tested ({reason}): {', '.join(sorted(es))}" for reason, es in why.items())
+                + ".", "",
                 "| effect put in | right means | copies | right | named instead | carried: estimate moved by the injected value (largest error/sigma, median) | horizontal RMSE [m] before / after | attitude RMSE [deg] before / after |",
                 "|---|---|---|---|---|---|---|---|"]
         total = 0

@@ -212,7 +212,7 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     return 1.0;
   };
   const double mag_factor = sigma_factor(2), vel_factor = sigma_factor(1), pos_factor = sigma_factor(0);
-  if (o.tune_mag_sigma && (mag_factor != 1.0 || vel_factor != 1.0 || pos_factor != 1.0)) {
+  if (o.tune_noise_sigmas && (mag_factor != 1.0 || vel_factor != 1.0 || pos_factor != 1.0)) {
     tuned.replay.unit.sigma.position_sigma_scale = out.pos_sigma_scale =
         o.replay.unit.sigma.position_sigma_scale * pos_factor;
     tuned.replay.unit.mag_sigma_uT = out.mag_sigma_uT = std::max(0.05, o.replay.unit.mag_sigma_uT * mag_factor);

@@ -32,7 +32,7 @@ struct DiagnoseOptions {
   int rounds = 2;
   double min_significance = 3.0;  // |estimate| / sigma of at least one component
   double min_log_evidence = 4.6;  // log Bayes factor: ln 100, "decisive" on Jeffreys' scale
-  bool tune_mag_sigma = true;     // scale the magnetometer sigma so its NIS is 1 before comparing
+  bool tune_noise_sigmas = true;  // scale the magnetometer, GNSS velocity and position sigmas by the baseline's NIS first
   bool tune_process_noise = true; // without calib.json: pick the default model's scale by likelihood
   std::string apply_path;         // non-empty: write the final model's effects there (a model file)
   unsigned threads = 0;           // candidate replays at once (0: one per core)
