@@ -32,12 +32,9 @@ import shutil
 import subprocess
 import sys
 
-from diagnose_eval import write_section
+from diagnose_eval import CARRIED, EFFECTS, write_section
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-EFFECTS = ["accel_scale", "gyro_scale", "accel_misalign", "gyro_misalign", "lever_arm", "gps_latency",
-           "accel_temp_bias", "gyro_temp_bias", "mag_hard_iron", "mag_soft_iron", "gyro_g_sensitivity"]
-CARRIED = {"mag_hard_iron", "gps_latency"}
 # Effects whose injected value is the state's, times this (ppm for the scales), component for component.
 SIMPLE_UNITS = {"gps_latency": 1.0, "lever_arm": 1.0, "mag_hard_iron": 1.0, "accel_scale": 1e-6, "gyro_scale": 1e-6}
 

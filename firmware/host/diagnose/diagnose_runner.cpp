@@ -196,8 +196,8 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
   // The magnetometer's and the GNSS velocity's sigmas are guesses (GST reports
   // only the position's), and a receiver's GST can be generous too (the real
   // quadcopter's u-blox: NIS 0.05, where a 0.5-m lever arm hid). A
-  // too-generous sigma hides effects: when a source's NIS per component is below 0.5, scale its sigma by sqrt(NIS) (the factor
-  // for white noise) so it is 1. Upwards only by what every flight phase shows
+  // too-generous sigma hides effects: when a source's NIS per component is
+  // below 0.5, scale its sigma by sqrt(NIS) (the factor for white noise) so it is 1. Upwards only by what every flight phase shows
   // (a noise level set too small: a missing effect shows where the vehicle
   // excites it, in turns, climbs or speed changes, and inflating the sigma by
   // that would hide it): by the whole misfit when it is alike in every phase,

@@ -101,12 +101,13 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
     rounds.push_back({{"model", effect_list(round.model)}, {"found", round.found}, {"candidates", cands}});
   }
   j["rounds"] = rounds;
-  nlohmann::json missing = nlohmann::json::array();
-  for (est::Effect e : d.missing) missing.push_back(est::kEffectNames[static_cast<std::size_t>(e)]);
-  j["missing_effects"] = missing;
-  nlohmann::json changed = nlohmann::json::array();
-  for (est::Effect e : d.changed) changed.push_back(est::kEffectNames[static_cast<std::size_t>(e)]);
-  j["changed_effects"] = changed;
+  auto names = [](const std::vector<est::Effect>& effects) {
+    nlohmann::json out = nlohmann::json::array();
+    for (est::Effect e : effects) out.push_back(est::kEffectNames[static_cast<std::size_t>(e)]);
+    return out;
+  };
+  j["missing_effects"] = names(d.missing);
+  j["changed_effects"] = names(d.changed);
   nlohmann::json skipped = nlohmann::json::array();
   if (!d.skipped.empty()) {
     md << "## Not tested: the data cannot tell\n\n";
