@@ -153,6 +153,17 @@ TEST(Diagnose, AModelFileEffectThatChangedIsNamedAsChanged) {
   std::ifstream in2(out + "/diagnosis.json");
   const auto d2 = nlohmann::json::parse(in2);
   EXPECT_EQ(d2["changed_effects"].size(), 0u) << d2.dump(1);
+
+  // --candidates limits the re-learnt candidates too: the moved antenna is not
+  // tried (nor named) when the user asks only about the accelerometer scale.
+  const std::string out3 = (dir.path() / "diag3").string();
+  const auto r3 = run_sinu({"diagnose", "--in", (dir.path() / "flight").string(), "--gps-latency", "0.045", "--rounds",
+                            "1", "--model-file", moved, "--candidates", "accel_scale", "--out", out3});
+  ASSERT_EQ(r3.exit_code, 0) << r3.err;
+  std::ifstream in3(out3 + "/diagnosis.json");
+  const auto d3 = nlohmann::json::parse(in3);
+  EXPECT_EQ(d3["changed_effects"].size(), 0u) << d3.dump(1);
+  for (const auto& tried : d3["rounds"][0]["candidates"]) EXPECT_EQ(tried["effect"], "accel_scale") << tried.dump();
 }
 
 TEST(Diagnose, NamesAHiddenSoftIronAndTheHeadingRecovers) {

@@ -255,13 +255,14 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     std::vector<Trial> trials;
     for (std::size_t e = 0; e < est::kEffectCount; ++e) {
       const auto effect = static_cast<est::Effect>(e);
-      if (known[e].given && !tuned.replay.unit.relearn.has(effect)) trials.push_back({effect, true});
-      if (!o.candidates.has(effect) || model.has(effect)) continue;
+      // A model-file effect is in the model: tried re-learnt, until it has been.
+      const bool relearn = known[e].given && !tuned.replay.unit.relearn.has(effect);
+      if (!o.candidates.has(effect) || (model.has(effect) && !relearn)) continue;
       if (const std::string why = untestable_reason(effect, current.excitation); !why.empty()) {
         if (r == 0) out.skipped.push_back({effect, why});
         continue;
       }
-      trials.push_back({effect, false});
+      trials.push_back({effect, relearn});
     }
     std::vector<RunScore> scores(trials.size());
     std::vector<std::string> errors(trials.size());
