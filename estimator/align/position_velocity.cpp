@@ -23,8 +23,6 @@ bool PositionVelocity::fill(GnssObservation& z) {
           std::remainder(z.lon_rad - f.lon_rad, 2.0 * std::numbers::pi) * (wgs84::transverse_radius_m(z.lat_rad) + z.h_m) *
           std::cos(z.lat_rad);
       z.v_ne_m_s = {north_m / dt, east_m / dt};
-      z.speed_m_s = z.v_ne_m_s.norm();
-      z.course_rad = std::atan2(z.v_ne_m_s.y(), z.v_ne_m_s.x());
       const double white = std::sqrt(cfg_.white_fraction * (sigma_h * sigma_h + f.sigma_h_m * f.sigma_h_m)) / dt;
       z.sigma_vel_m_s = std::hypot(white, 0.5 * cfg_.lag_accel_m_s2 * dt);
       z.has_velocity = z.velocity_from_positions = true;

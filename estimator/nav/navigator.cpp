@@ -336,7 +336,7 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
       }
       recover(recovery_.on_position(t_meas, ok, innovation_h, z.sigma_ned_m.head<2>().norm()), z, dt_back, t_meas);
     }
-    if (z.has_velocity) last_gnss_speed_m_s_ = z.speed_m_s;
+    if (z.has_velocity) last_gnss_speed_m_s_ = z.v_ne_m_s.norm();
     if (z.has_velocity && cfg_.fuse_velocity) {
       if (!vel_noise_started_) {  // the first epoch's sigma is the starting value
         vel_noise_.configure(cfg_.gnss_velocity_noise, z.sigma_vel_m_s);
@@ -351,7 +351,7 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
                            t_meas);
       vel_noise_.learn(last_result_, t_meas - last_vel_update_t_s_);
       last_vel_update_t_s_ = t_meas;
-      recover(recovery_.on_velocity(t_meas, ok, z.speed_m_s), z, dt_back, t_meas);
+      recover(recovery_.on_velocity(t_meas, ok, z.v_ne_m_s.norm()), z, dt_back, t_meas);
     }
   }
 }

@@ -36,9 +36,8 @@ bool gnss_from_fix(const drivers::GpsFix& fix, const GnssSigmaConfig& cfg, est::
   }
   if (fix.speed_m_s && fix.course_deg) {
     out.has_velocity = true;
-    out.speed_m_s = *fix.speed_m_s;
-    out.course_rad = *fix.course_deg * kDegToRad;
-    out.v_ne_m_s = {out.speed_m_s * std::cos(out.course_rad), out.speed_m_s * std::sin(out.course_rad)};
+    const double course_rad = *fix.course_deg * kDegToRad;
+    out.v_ne_m_s = *fix.speed_m_s * Eigen::Vector2d(std::cos(course_rad), std::sin(course_rad));
     out.sigma_vel_m_s = cfg.velocity_sigma_m_s;
   }
   return true;

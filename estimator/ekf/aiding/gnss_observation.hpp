@@ -14,8 +14,6 @@ struct GnssObservation {
   bool has_velocity = false;
   Eigen::Vector2d v_ne_m_s = Eigen::Vector2d::Zero();
   double sigma_vel_m_s = 0.3;
-  double speed_m_s = 0.0;
-  double course_rad = 0.0;
   bool velocity_from_positions = false;  // not the receiver's: differenced fixes (align/position_velocity.hpp)
   double decimal_year = NAN;  // UTC date of the fix when the receiver sent one (RMC, ZDA): the geomagnetic model's epoch
 };
