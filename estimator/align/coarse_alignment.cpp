@@ -161,9 +161,14 @@ bool CoarseAlignment::declination_for(const Eigen::Vector3d& m_level, const Gnss
   return true;
 }
 
-void CoarseAlignment::record_field_check(AlignmentResult& out) const {
+void CoarseAlignment::record_field_check(const GnssObservation& z, AlignmentResult& out) const {
   out.field_ratio = field_ratio_;
   out.dip_difference_rad = dip_difference_rad_;
+  if (cfg_.use_geomagnetic_model) {
+    const double year = std::isfinite(z.decimal_year) ? z.decimal_year
+                                                      : 0.5 * (geomag::kValidFromYear + geomag::kValidUntilYear);
+    out.model_field_n_uT = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, year).b_n_uT;
+  }
 }
 
 bool CoarseAlignment::mag_heading(const Eigen::Quaterniond& q_nb, const Eigen::Vector3d& mag_b_uT,
@@ -207,7 +212,7 @@ bool CoarseAlignment::align_in_motion(const GnssObservation& z, double t_now, Al
 void CoarseAlignment::finish_in_motion(const GnssObservation& z, double t_now, const InMotionSolution& s,
                                        double yaw, double yaw_sigma, AlignmentResult& out) {
   const double turn = yaw - euler_from_quat(s.q_nb).z();
-  record_field_check(out);
+  record_field_check(z, out);
   out.nav.q_nb = (Eigen::Quaterniond(Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ())) * s.q_nb).normalized();
   out.at_rest = false;
   out.att_sigma_rad = {s.att_sigma_rad.x(), s.att_sigma_rad.y(), yaw_sigma};
@@ -250,7 +255,7 @@ void CoarseAlignment::finish(const GnssObservation& z, double t_now, double turn
   out.nav.h_m = z.h_m;
   out.nav.t_s = t_now;
   out.temp_ref_degC = r.temp_degC;
-  record_field_check(out);
+  record_field_check(z, out);
   status_ = AlignStatus::Aligned;
 }
 

@@ -102,6 +102,10 @@ struct AlignmentResult {
   // The measured field against the model's, when the model was consulted:
   // its strength ratio and dip difference (why it was or was not used).
   double field_ratio = NAN, dip_difference_rad = NAN;
+  // The model's Earth field at the fix (NED), whether or not the measured field
+  // matched it (NaN with the model switched off): the strength and dip the
+  // navigator's field states start from (aiding/field_model).
+  Eigen::Vector3d model_field_n_uT = Eigen::Vector3d::Constant(NAN);
 };
 
 class CoarseAlignment {
@@ -135,7 +139,7 @@ class CoarseAlignment {
                        double& sigma_rad, AlignmentResult& out);
   /// The last field check against the model (NaN: none), kept for the result
   /// whichever source the heading finally came from.
-  void record_field_check(AlignmentResult& out) const;
+  void record_field_check(const GnssObservation& z, AlignmentResult& out) const;
 
   AlignmentConfig cfg_;
   AlignStatus status_ = AlignStatus::WaitingForRest;

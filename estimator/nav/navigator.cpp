@@ -5,6 +5,7 @@
 
 #include "estimator/earth/wgs84.hpp"
 #include "estimator/ekf/aiding/declination/declination.hpp"
+#include "estimator/ekf/aiding/field_model/field_model.hpp"
 #include "estimator/ekf/aiding/gnss_position/gnss_position.hpp"
 #include "estimator/ekf/aiding/gnss_velocity/gnss_velocity.hpp"
 #include "estimator/ekf/aiding/magnetometer/magnetometer.hpp"
@@ -404,15 +405,22 @@ void Navigator::fuse_magnetometer(const ImuSample& s) {
     predict_.flush(filter_);
     filter_.activate_deferred();
     filter_.start_mag_field(nav_, s.mag_b_uT, mag_noise_.sigma());
-    // The declination the heading was aligned with (given, or the model's for a
-    // field it recognised) is known beyond this flight: the field's direction too.
-    if (std::isfinite(alignment_result_.declination_rad) && filter_.layout().has(Effect::MagEarthField)) {
-      const UpdateResult r = fuse_measurement(
-          filter_.P(), dx_,
-          declination_measurement(filter_, alignment_result_.declination_rad,
-                                  std::hypot(cfg_.declination_sigma_rad, alignment_result_.declination_drift_rad), 1e9),
-          frozen_);
-      if (r.accepted) filter_.feedback(dx_, nav_);
+    // Priors on the field state, fused once: the declination the heading was
+    // aligned with (given, or the model's for a field it recognised) is known
+    // beyond this flight, the field's direction too; the model's strength and
+    // down component hold the field apart from the hard iron (aiding/field_model).
+    const auto fuse_prior = [&](const Measurement& m) {
+      if (fuse_measurement(filter_.P(), dx_, m, frozen_).accepted) filter_.feedback(dx_, nav_);
+    };
+    if (filter_.layout().has(Effect::MagEarthField)) {
+      if (std::isfinite(alignment_result_.declination_rad)) {
+        fuse_prior(declination_measurement(
+            filter_, alignment_result_.declination_rad,
+            std::hypot(cfg_.declination_sigma_rad, alignment_result_.declination_drift_rad), 1e9));
+      }
+      if (alignment_result_.model_field_n_uT.allFinite()) {
+        fuse_prior(field_model_measurement(filter_, alignment_result_.model_field_n_uT, cfg_.field_model_sigma_uT, 1e9));
+      }
     }
     mag_started_ = true;
     last_mag_fused_t_s_ = s.t_s;

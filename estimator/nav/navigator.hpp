@@ -86,6 +86,10 @@ struct NavigatorConfig {
   // The declination's uncertainty as a prior on the Earth field's direction:
   // the World Magnetic Model's 0.3-0.5 deg, local anomalies, residual soft iron.
   double declination_sigma_rad = 0.035;
+  // The model's field strength and down component, fused when the field states
+  // start (aiding/field_model): the model's 0.2 uT, crustal anomalies and a
+  // magnetometer's scale error of up to ~10 % (4-6 uT).
+  double field_model_sigma_uT = 5.0;
   // Noise the data do not state, learnt from the innovations (noise_adapter.hpp):
   // GNSS velocity (NMEA has no accuracy for it; the initial value is the
   // observation's sigma) and the magnetometer.

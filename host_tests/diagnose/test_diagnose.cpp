@@ -397,8 +397,8 @@ TEST(Diagnose, OnTheRealQuadcopterOnlyPlausibleEffectsAreNamedAndTheErrorFalls) 
   }
   EXPECT_NE(r.out.find("not named: gyro_misalign would fit"), std::string::npos) << r.out;
   // Applied as a user would (the next replay starts from the model file), the
-  // error against the autopilot's EKF falls: measured 0.476 -> 0.432 m and
-  // 4.32 -> 4.00 deg (soft iron and a 9 cm lever arm). A lower error, not a
+  // error against the autopilot's EKF falls: measured 0.441 -> 0.397 m and
+  // 4.52 -> 3.82 deg (soft iron and an 11 cm lever arm). A lower error, not a
   // tolerance on the number.
   const auto before = run_sinu({"replay", "--in", uav, "--quiet", "--out", dir.file("before")});
   const auto after =

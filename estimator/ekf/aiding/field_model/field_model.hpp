@@ -1,0 +1,31 @@
+#pragma once
+// The World Magnetic Model's field strength and its down component as a
+// measurement of the Earth-field state, fused once when the field states
+// start (with the declination, aiding/declination, when the measured field is
+// recognised). Why: the field state starts from the first sample, C_nb (m - h),
+// so its error and the hard iron's are one 30-uT uncertainty that only a
+// rotation separates; at rest every small attitude correction turns that
+// direction and leaks it into what the magnetometer sees, and the two wander
+// by tens of uT (and a soft iron learnt on top of them converges wrong). The
+// model knows the Earth's field to ~0.2 uT; the sigma also covers crustal
+// anomalies and a magnetometer's scale error (a few %), which the strength
+// here does not see. Both are invariant to the heading, so an unrecognised
+// field (a large hard iron) gets no heading from it: its offset goes to the
+// hard iron.
+// With the invariant field error e (state_layout.hpp), dF = e - [F x] phi, and
+// a scalar h(F) with gradient g: y = h(F_hat) - h_model,
+//   H_field = -g,  H_att = (g x F)^T (zero for the strength, g = F / |F|);
+// the down component: g = (0, 0, 1).
+#include <Eigen/Core>
+
+#include "estimator/ekf/error_state_filter.hpp"
+#include "estimator/ekf/measurement_update.hpp"
+
+namespace sinu::est {
+
+/// Needs the mag_earth_field states (Effect::MagEarthField) in the layout.
+/// model_field_n_uT: the model's field at the site, NED [uT].
+Measurement field_model_measurement(const ErrorStateFilter& filter, const Eigen::Vector3d& model_field_n_uT,
+                                    double sigma_uT, double gate_sigma);
+
+}  // namespace sinu::est

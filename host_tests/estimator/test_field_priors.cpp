@@ -1,0 +1,82 @@
+// The priors on the Earth-field state, the declination (ekf/aiding/declination)
+// and the World Magnetic Model's strength and down component
+// (ekf/aiding/field_model): their Jacobians against finite differences over
+// the true field F = F_hat + e - [F x] phi (the invariant field error and the
+// attitude error, state_layout.hpp), at fields of every kind: steep (high
+// latitude), flat (equator), pointing up (south), east or west.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "estimator/ekf/aiding/declination/declination.hpp"
+#include "estimator/ekf/aiding/field_model/field_model.hpp"
+
+namespace sinu::test {
+namespace {
+
+using namespace sinu::est;
+
+const Eigen::Vector3d kFields[] = {{18.0, 2.0, 50.0}, {36.0, 1.6, 6.7}, {20.0, -8.0, -50.0}, {-5.0, 25.0, 30.0}};
+
+/// A filter whose only effect is the Earth field, estimated at F_hat.
+void start_with_field(ErrorStateFilter& filter, const Eigen::Vector3d& F_hat) {
+  EffectSet set;
+  set.add(Effect::MagEarthField);
+  filter.init(StateLayout::make(1, set), SensorNoise{}, EffectTuning{}, NavUncertainty{});
+  for (Eigen::Index i = 0; i < 3; ++i) filter.set_effect(Effect::MagEarthField, i, F_hat(i));
+}
+
+TEST(Declination, JacobianMatchesFiniteDifferencesOfTheFieldsDirection) {
+  for (const Eigen::Vector3d& F_hat : kFields) {
+    ErrorStateFilter filter;
+    start_with_field(filter, F_hat);
+    const Slice field = filter.layout().of(Effect::MagEarthField);
+    const double d_model = 0.1;
+    const Measurement m = declination_measurement(filter, d_model, 0.03, 5.0);
+    const double y0 = m.innovation(0);
+    EXPECT_NEAR(y0, std::atan2(F_hat.y(), F_hat.x()) - d_model, 1e-12);
+    // y(x) = D(F_hat) - D(F_true): the innovation when the truth differs from the estimate by x.
+    constexpr double kStep = 1e-6;
+    for (int k = 0; k < 6; ++k) {
+      Eigen::Vector3d e = Eigen::Vector3d::Zero(), phi = Eigen::Vector3d::Zero();
+      (k < 3 ? e : phi)(k % 3) = kStep * (k < 3 ? F_hat.norm() : 1.0);
+      const Eigen::Vector3d F_true = F_hat + e - F_hat.cross(phi);
+      const double y = std::atan2(F_hat.y(), F_hat.x()) - std::atan2(F_true.y(), F_true.x());
+      const Eigen::Index col = k < 3 ? field.start + k : filter.layout().att.start + (k - 3);
+      const double dx = k < 3 ? e(k) : phi(k - 3);
+      // Central-difference-free check: first order, the step's square (1e-12) is the error.
+      EXPECT_NEAR(m.H(0, col) * dx, y, 1e-10) << "field " << F_hat.transpose() << " state " << k;
+    }
+  }
+}
+
+TEST(FieldModel, JacobianMatchesFiniteDifferencesOfStrengthAndDownComponent) {
+  const Eigen::Vector3d model(20.0, 2.0, 45.0);
+  for (const Eigen::Vector3d& F_hat : kFields) {
+    ErrorStateFilter filter;
+    start_with_field(filter, F_hat);
+    const Slice field = filter.layout().of(Effect::MagEarthField);
+    const Measurement m = field_model_measurement(filter, model, 5.0, 5.0);
+    ASSERT_EQ(m.innovation.size(), 2);
+    EXPECT_NEAR(m.innovation(0), F_hat.norm() - model.norm(), 1e-12);
+    EXPECT_NEAR(m.innovation(1), F_hat.z() - model.z(), 1e-12);
+    EXPECT_DOUBLE_EQ(m.R(0, 0), 25.0);
+    constexpr double kStep = 1e-6;
+    for (int k = 0; k < 6; ++k) {
+      Eigen::Vector3d e = Eigen::Vector3d::Zero(), phi = Eigen::Vector3d::Zero();
+      (k < 3 ? e : phi)(k % 3) = kStep * (k < 3 ? F_hat.norm() : 1.0);
+      const Eigen::Vector3d F_true = F_hat + e - F_hat.cross(phi);
+      // y(x) = h(F_hat) - h(F_true): the innovation when the truth differs from the estimate by x.
+      const double y[2] = {F_hat.norm() - F_true.norm(), F_hat.z() - F_true.z()};
+      const Eigen::Index col = k < 3 ? field.start + k : filter.layout().att.start + (k - 3);
+      const double dx = k < 3 ? e(k) : phi(k - 3);
+      for (Eigen::Index r = 0; r < 2; ++r) {
+        // First order: the step's square (~1e-12 of the field, 5e-11 uT) is the error.
+        EXPECT_NEAR(m.H(r, col) * dx, y[r], 1e-9) << "field " << F_hat.transpose() << " row " << r << " state " << k;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sinu::test
