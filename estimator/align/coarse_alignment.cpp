@@ -31,6 +31,10 @@ namespace {
 Eigen::Quaterniond carried(const Eigen::Quaterniond& q, const ImuSample& s, const RestEstimate& rest, double dt) {
   return (q * quat_from_rotation_vector((s.angular_rate_b_rad_s - rest.mean_rate_b_rad_s) * dt)).normalized();
 }
+/// The fix's date for the geomagnetic model; without one, the middle of its span.
+double model_year(const GnssObservation& z) {
+  return std::isfinite(z.decimal_year) ? z.decimal_year : 0.5 * (geomag::kValidFromYear + geomag::kValidUntilYear);
+}
 }  // namespace
 
 void CoarseAlignment::add_imu(const ImuSample& s, double dt) {
@@ -141,7 +145,7 @@ bool CoarseAlignment::declination_for(const Eigen::Vector3d& m_level, const Gnss
   // span, its middle, the declination's drift to either end in the sigma
   // (0.1-0.2 deg a year at most sites: a few deg instead of 20).
   const bool dated = std::isfinite(z.decimal_year);
-  const double year = dated ? z.decimal_year : 0.5 * (geomag::kValidFromYear + geomag::kValidUntilYear);
+  const double year = model_year(z);
   const geomag::GeomagneticField f = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, year);
   double drift = 0.0;
   if (!dated) {
@@ -165,9 +169,7 @@ void CoarseAlignment::record_field_check(const GnssObservation& z, AlignmentResu
   out.field_ratio = field_ratio_;
   out.dip_difference_rad = dip_difference_rad_;
   if (cfg_.use_geomagnetic_model) {
-    const double year = std::isfinite(z.decimal_year) ? z.decimal_year
-                                                      : 0.5 * (geomag::kValidFromYear + geomag::kValidUntilYear);
-    out.model_field_n_uT = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, year).b_n_uT;
+    out.model_field_n_uT = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, model_year(z)).b_n_uT;
   }
 }
 
