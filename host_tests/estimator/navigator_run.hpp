@@ -66,6 +66,20 @@ inline void feed(est::Navigator& nav, const std::vector<est::ImuSample>& imu,
   nav.flush();
 }
 
+/// One navigator run over a flight, every output scored against the truth:
+/// run.stats, and run.nav for what the filter ended with.
+struct ScoredRun {
+  ScoredRun(const est::NavigatorConfig& cfg, const std::vector<TruthSample>& truth, double rate_hz,
+            const std::vector<est::ImuSample>& imu, const std::vector<est::GnssObservation>& gnss)
+      : cmp(truth, rate_hz, stats) {
+    nav.init(cfg, &cmp, nullptr);
+    feed(nav, imu, gnss);
+  }
+  RunStats stats;
+  TruthComparer cmp;
+  est::Navigator nav;
+};
+
 inline double rms_after(const std::vector<double>& t, const std::vector<double>& x, double t_from) {
   double sum = 0.0;
   std::size_t n = 0;

@@ -46,11 +46,9 @@ TEST(Navigator, PerfectImuAndGpsThirtyMinuteFlight) {
   const auto gnss = AnalyticFlight::gnss(truth, 8, 0.05, Eigen::Vector3d::Zero(), 0.5, 0.1);
   est::NavigatorConfig cfg;
   cfg.gps_latency_s = 0.05;
-  RunStats stats;
-  TruthComparer cmp(truth, 40.0, stats);
-  est::Navigator nav;
-  nav.init(cfg, &cmp, nullptr);
-  feed(nav, imu_of(truth), gnss);
+  const ScoredRun run(cfg, truth, 40.0, imu_of(truth), gnss);
+  const RunStats& stats = run.stats;
+  const est::Navigator& nav = run.nav;
   ASSERT_TRUE(nav.aligned());
   // Alignment completes during the run-up (course at 3 m/s); the 30 minutes
   // of flight are scored from 60 s after it (heading converges on the first turns).
@@ -101,11 +99,9 @@ TEST_P(MagnetometerThroughTurns, KeepsTheAttitude) {
   est::NavigatorConfig cfg;
   cfg.mag_sigma_uT = std::max(0.1, c.mag_noise_uT);
   cfg.alignment.use_geomagnetic_model = c.site_field;
-  RunStats stats;
-  TruthComparer cmp(truth, 40.0, stats);
-  est::Navigator nav;
-  nav.init(cfg, &cmp, nullptr);
-  feed(nav, imu, gnss);
+  const ScoredRun run(cfg, truth, 40.0, imu, gnss);
+  const RunStats& stats = run.stats;
+  const est::Navigator& nav = run.nav;
   ASSERT_TRUE(nav.aligned());
   ASSERT_TRUE(nav.filter().layout().has(est::Effect::MagEarthField));
   const double from = stats.align_t + 120.0;  // the run-up and the first turn have found the heading
@@ -153,11 +149,8 @@ TEST(Navigator, AtRestTheFieldStrengthAndTheVerticalHardIronHold) {
         imu_with_magnetometer(truth, field_n, Eigen::Vector3d::Zero(), 0.4, 1.6e-3, 11);
     est::NavigatorConfig cfg;
     if (soft_iron) cfg.effects.add(est::Effect::MagSoftIron);
-    RunStats stats;
-    TruthComparer cmp(truth, 40.0, stats);
-    est::Navigator nav;
-    nav.init(cfg, &cmp, nullptr);
-    feed(nav, imu, gnss);
+    const ScoredRun run(cfg, truth, 40.0, imu, gnss);
+    const est::Navigator& nav = run.nav;
     ASSERT_TRUE(nav.aligned());
     const Eigen::Vector3d h = nav.filter().mag_hard_iron_b_uT(), F = nav.filter().mag_earth_field_n_uT();
     std::printf("soft iron %d: hard iron [%.2f %.2f %.2f] uT, field strength %.2f uT (true %.2f)\n", soft_iron, h.x(),
@@ -194,11 +187,9 @@ TEST(Navigator, GateRejectsAnOutlierAndCountsIt) {
   gnss[bad].lat_rad += 50.0 / 6.37e6;  // 50 m north: 100 sigma
   const double t_bad = gnss[bad].arrival_s;
   est::NavigatorConfig cfg;
-  RunStats stats;
-  TruthComparer cmp(truth, 40.0, stats);
-  est::Navigator nav;
-  nav.init(cfg, &cmp, nullptr);
-  feed(nav, imu_of(truth), gnss);
+  const ScoredRun run(cfg, truth, 40.0, imu_of(truth), gnss);
+  const RunStats& stats = run.stats;
+  const est::Navigator& nav = run.nav;
   EXPECT_EQ(nav.counters().rejected[static_cast<std::size_t>(est::AidingSource::GnssPosition)], 1u);
   // The solution right after the outlier is unaffected (below 0.5 m, where
   // a fused 50 m jump would have moved it by metres).
@@ -266,11 +257,8 @@ TEST(Navigator, NeesAndNisInsideTheirChiSquareBoundsWithAMatchedModel) {
   }
   est::NavigatorConfig cfg;
   cfg.noise = model;
-  RunStats stats;
-  TruthComparer cmp(truth, kRate, stats);
-  est::Navigator nav;
-  nav.init(cfg, &cmp, nullptr);
-  feed(nav, imu, gnss);
+  const ScoredRun run(cfg, truth, kRate, imu, gnss);
+  const RunStats& stats = run.stats;
   // Scored from 60 s after alignment: the coarse heading prior is not Gaussian.
   const double from = stats.align_t + 60.0;
   const double nees_in = fraction_inside(stats.nees, &stats.t, from, kChi2Lo9, kChi2Hi9);
