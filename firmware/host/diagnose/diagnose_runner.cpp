@@ -108,6 +108,44 @@ std::string untestable_reason(est::Effect effect, const replay::Excitation& x) {
   return "";
 }
 
+void weigh_estimate(const replay::EffectEstimate& eff, const est::EffectPrior& file, const DiagnoseOptions& o,
+                    CandidateResult& c) {
+  const est::Effect effect = c.effect;
+  // Soft iron: a scale common to the three diagonal terms (xx yy zz) trades
+  // against the Earth field's strength, itself a state, so it is no evidence
+  // of soft iron; only the diagonal's differences and the cross terms are.
+  auto common = [&](auto& v) { return effect == est::Effect::MagSoftIron ? (v[0] + v[1] + v[2]) / 3.0 : 0.0; };
+  const double common_scale = common(eff.estimate), file_common = c.changed ? common(file.value) : 0.0;
+  for (std::size_t k = 0; k < eff.estimate.size(); ++k) {
+    const double v = eff.estimate[k];
+    double sg = eff.sigma[k];
+    c.estimate.push_back(v);
+    c.sigma.push_back(sg);
+    c.sigma_ratio.push_back(sg / est::spec(effect).initial_sigma);
+    // Distance from what the model assumed without the states (the configured latency
+    // and lever arm, zero otherwise), in sigmas; for a model-file effect
+    // learnt again, from the file's value in both sigmas.
+    double prior = 0.0;
+    if (effect == est::Effect::GpsLatency) prior = o.replay.unit.gps_latency_s;
+    if (effect == est::Effect::LeverArm) prior = o.replay.unit.lever_arm_b_m(static_cast<Eigen::Index>(k));
+    if (effect == est::Effect::MagSoftIron && k < 3) prior = common_scale;
+    if (c.changed) {
+      c.file_estimate.push_back(file.value[k]);
+      c.file_sigma.push_back(file.sigma[k]);
+      prior = file.value[k] + (k < 3 ? common_scale - file_common : 0.0);
+      sg = std::hypot(sg, file.sigma[k]);
+    }
+    const double z = sg > 0.0 ? std::abs(v - prior) / sg : 0.0;
+    c.significance = std::max(c.significance, z);
+    // Only a component the flight determines can be implausible: one it left
+    // near its prior (an unexcited axis) wanders at its prior sigma, which may
+    // reach the plausible maximum without the data asking for it.
+    if (z >= o.min_significance)
+      c.plausibility = std::max(c.plausibility, std::abs(v - (k < 3 ? common_scale : 0.0)) /
+                                                    est::spec(effect).plausible_max);
+  }
+}
+
 void observability_notes(const CandidateResult& c, const replay::Excitation& x, std::vector<std::string>& out) {
   const est::EffectSpec& spec = est::spec(c.effect);
   for (std::size_t i = 0; i < c.sigma_ratio.size(); ++i) {
@@ -307,37 +345,8 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
       // uncertainty), so it pays for the extra parameters itself: the gain is
       // a log Bayes factor, and a BIC term on top would charge for them twice.
       c.evidence_threshold = o.min_log_evidence;
-      for (const replay::EffectEstimate& eff : score.effects) {
-        if (eff.effect != effect) continue;
-        // Soft iron: a scale common to the three diagonal terms (xx yy zz) trades
-        // against the Earth field's strength, itself a state, so it is no evidence
-        // of soft iron; only the diagonal's differences and the cross terms are.
-        auto common = [&](auto& v) { return effect == est::Effect::MagSoftIron ? (v[0] + v[1] + v[2]) / 3.0 : 0.0; };
-        const double common_scale = common(eff.estimate), file_common = c.changed ? common(file.value) : 0.0;
-        for (std::size_t k = 0; k < eff.estimate.size(); ++k) {
-          const double v = eff.estimate[k];
-          double sg = eff.sigma[k];
-          c.estimate.push_back(v);
-          c.sigma.push_back(sg);
-          c.sigma_ratio.push_back(sg / est::spec(effect).initial_sigma);
-          // Distance from what the model assumed without the states (the configured latency
-          // and lever arm, zero otherwise), in sigmas; for a model-file effect
-          // learnt again, from the file's value in both sigmas.
-          double prior = 0.0;
-          if (effect == est::Effect::GpsLatency) prior = o.replay.unit.gps_latency_s;
-          if (effect == est::Effect::LeverArm) prior = o.replay.unit.lever_arm_b_m(static_cast<Eigen::Index>(k));
-          if (effect == est::Effect::MagSoftIron && k < 3) prior = common_scale;
-          if (c.changed) {
-            c.file_estimate.push_back(file.value[k]);
-            c.file_sigma.push_back(file.sigma[k]);
-            prior = file.value[k] + (k < 3 ? common_scale - file_common : 0.0);
-            sg = std::hypot(sg, file.sigma[k]);
-          }
-          if (sg > 0.0) c.significance = std::max(c.significance, std::abs(v - prior) / sg);
-          c.plausibility = std::max(c.plausibility, std::abs(v - (k < 3 ? common_scale : 0.0)) /
-                                                        est::spec(effect).plausible_max);
-        }
-      }
+      for (const replay::EffectEstimate& eff : score.effects)
+        if (eff.effect == effect) weigh_estimate(eff, file, o, c);
       c.stats = score.stats;
       c.rmse_pos_h_m = score.rmse_pos_h_m;
       c.rmse_att_deg = score.rmse_att_deg;

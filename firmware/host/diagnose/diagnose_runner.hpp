@@ -53,7 +53,8 @@ struct CandidateResult {
   std::vector<double> sigma_ratio;  // per component: posterior / prior sigma (near 1: the flight did not reveal it)
   InnovationStats stats;
   double rmse_pos_h_m = -1.0, rmse_att_deg = -1.0;  // against truth.csv (-1: none)
-  double plausibility = 0.0; // max |estimate| / the vocabulary's plausible maximum: above 1 no real unit has it
+  double plausibility = 0.0; // max |estimate| / the vocabulary's plausible maximum over the significant
+                             // components: above 1 no real unit has it
   bool plausible() const { return plausibility <= 1.0; }
   /// The data want it (likelihood beyond the threshold, an estimate many sigmas
   /// from the assumed value) and a real unit can have it.
@@ -105,6 +106,14 @@ std::vector<std::string> noise_findings(const InnovationStats& final_stats, bool
 /// Why this flight cannot test `effect` ("" if it can): no temperature, too
 /// little temperature change, no magnetometer.
 std::string untestable_reason(est::Effect effect, const replay::Excitation& x);
+
+/// Fills c's estimate, sigmas, significance (the largest |estimate - assumed|
+/// / sigma: the configured latency and lever arm, zero otherwise, the file's
+/// value for a re-learnt effect) and plausibility (the largest significant
+/// component against the vocabulary's plausible maximum) from a replay's
+/// estimate of c.effect; `file` is the model file's value (c.changed only).
+void weigh_estimate(const replay::EffectEstimate& eff, const est::EffectPrior& file, const DiagnoseOptions& o,
+                    CandidateResult& c);
 
 /// Notes for the components of a candidate the flight barely constrained
 /// (posterior sigma above half the prior), with what would reveal them.
