@@ -2,8 +2,14 @@
 // Measurement noise learnt from the innovations (covariance matching,
 // Mehra 1972): for a consistent filter E[y_i^2] = (H P H^T)_ii + R_ii, so
 //   r = mean_i (y_i^2 - (H P H^T)_ii)
-// is an unbiased sample of the noise variance. Its mean (a running mean at
-// first, then exponential over `time_constant_s` of updates), kept within
+// is an unbiased sample of the noise variance, but a noisy one: its variance
+// is 2 S_ii^2 (S = H P H^T + R), so while the state is uncertain (S >> R, the
+// first updates after alignment) one sample says nothing about R and, taken at
+// full weight, a small innovation against a large S made R negative and the
+// learnt sigma fell to its floor on the first update. Each row is weighted by
+// its information on R relative to a row with H P H^T = 0, (R / S_ii)^2. The
+// weighted mean (a running mean at first, then exponential over
+// `time_constant_s`), kept within
 // [min_sigma, max_sigma], is the R the next update uses; the configured sigma
 // counts as `prior_samples` samples. For sources whose noise no message
 // states: NMEA has no velocity accuracy, a magnetometer's noise depends on the
@@ -38,16 +44,23 @@ class NoiseAdapter {
   /// One update (accepted or not) made with noise sigma(), dt_s after the last.
   void learn(const UpdateResult& r, double dt_s) {
     if (!cfg_.enabled || r.rows == 0 || !r.innovation.head(r.rows).allFinite()) return;
-    double sample = 0.0;
+    double sum = 0.0, weight = 0.0;
     for (Eigen::Index i = 0; i < r.rows; ++i) {
       const double s2 = r.innovation_sigma(i) * r.innovation_sigma(i);
+      if (!(s2 > 0.0)) continue;
       const double y2 = std::min(r.innovation(i) * r.innovation(i), cfg_.clip_sigmas * cfg_.clip_sigmas * s2);
-      sample += y2 - (s2 - variance_);
+      const double w = std::min(1.0, (variance_ / s2) * (variance_ / s2));
+      sum += w * (y2 - (s2 - variance_));
+      weight += w;
     }
-    sample /= static_cast<double>(r.rows);
-    samples_ += 1.0;
-    const double a = std::min(1.0, std::max(1.0 / samples_, std::max(dt_s, 0.0) / cfg_.time_constant_s));
-    variance_ += a * (sample - variance_);
+    if (!(weight > 0.0)) return;
+    const double sample = sum / weight;
+    weight /= static_cast<double>(r.rows);  // in full samples
+    // Its share: its weight over the total, which forgets over the time
+    // constant (a running mean while the total grows, then exponential; a
+    // steady weight keeps the time constant whatever its size).
+    samples_ = samples_ * std::exp(-std::max(dt_s, 0.0) / cfg_.time_constant_s) + weight;
+    variance_ += std::min(1.0, weight / samples_) * (sample - variance_);
     variance_ = std::clamp(variance_, cfg_.min_sigma * cfg_.min_sigma, cfg_.max_sigma * cfg_.max_sigma);
   }
 
