@@ -204,7 +204,7 @@ void Navigator::process(const ImuSample& s) {
   const double a = std::min(1.0, dt / 1.0);
   horizontal_accel_m_s2_ += a * (f_n.head<2>().norm() - horizontal_accel_m_s2_);
   const Eigen::Index yaw = filter_.layout().att.start + 2;
-  if (horizontal_accel_m_s2_ < cfg_.yaw_observable_accel_m_s2 &&
+  if (!mag_sees_heading(s.t_s) && horizontal_accel_m_s2_ < cfg_.yaw_observable_accel_m_s2 &&
       filter_.P()(yaw, yaw) > cfg_.yaw_freeze_sigma_rad * cfg_.yaw_freeze_sigma_rad) {
     frozen_.set(static_cast<std::size_t>(yaw));
     // Without a magnetometer to see the heading, nor the errors of the gyros
@@ -408,7 +408,7 @@ void Navigator::fuse_magnetometer(const ImuSample& s) {
     // Priors on the field state, fused once: the declination the heading was
     // aligned with (given, or the model's for a field it recognised) is known
     // beyond this flight, the field's direction too; the model's strength and
-    // down component hold the field apart from the hard iron (aiding/field_model).
+    // inclination hold the field apart from the hard iron (aiding/field_model).
     const auto fuse_prior = [&](const Measurement& m) {
       if (fuse_measurement(filter_.P(), dx_, m, frozen_).accepted) filter_.feedback(dx_, nav_);
     };
@@ -419,7 +419,8 @@ void Navigator::fuse_magnetometer(const ImuSample& s) {
             std::hypot(cfg_.declination_sigma_rad, alignment_result_.declination_drift_rad), 1e9));
       }
       if (alignment_result_.model_field_n_uT.allFinite()) {
-        fuse_prior(field_model_measurement(filter_, alignment_result_.model_field_n_uT, cfg_.field_model_sigma_uT, 1e9));
+        fuse_prior(field_model_measurement(filter_, alignment_result_.model_field_n_uT, cfg_.field_model_sigma_uT,
+                                           cfg_.inclination_sigma_rad, 1e9));
       }
     }
     mag_started_ = true;

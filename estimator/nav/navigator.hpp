@@ -17,6 +17,7 @@
 // gnss_recovery.hpp), sensor timeouts.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 #include "estimator/align/coarse_alignment.hpp"
@@ -86,10 +87,12 @@ struct NavigatorConfig {
   // The declination's uncertainty as a prior on the Earth field's direction:
   // the World Magnetic Model's 0.3-0.5 deg, local anomalies, residual soft iron.
   double declination_sigma_rad = 0.035;
-  // The model's field strength and down component, fused when the field states
+  // The model's field strength and inclination, fused when the field states
   // start (aiding/field_model): the model's 0.2 uT, crustal anomalies and a
-  // magnetometer's scale error of up to ~10 % (4-6 uT).
+  // magnetometer's scale error of up to ~10 % (4-6 uT); the inclination's
+  // anomalies and axes scaled differently (uav_log171 measures 2.8 deg less).
   double field_model_sigma_uT = 5.0;
+  double inclination_sigma_rad = 0.05;
   // Noise the data do not state, learnt from the innovations (noise_adapter.hpp):
   // GNSS velocity (NMEA has no accuracy for it; the initial value is the
   // observation's sigma) and the magnetometer.
@@ -120,6 +123,9 @@ struct NavigatorConfig {
   // yaw_observable_accel_m_s2 (at rest, steady flight), no update may move it:
   // at rest the accelerometer's noise, read as horizontal specific force,
   // would otherwise make the filter grow confident of a heading it cannot see.
+  // Not while the magnetometer holds the heading: with the yaw frozen, its
+  // updates turned the field's direction instead, and the declination's prior
+  // was lost (uav_log171 at rest: its sigma 2.0 -> 3.0 deg in 30 s).
   double yaw_freeze_sigma_rad = 0.05;
   double yaw_observable_accel_m_s2 = 0.3;
   double yaw_gyro_vertical_cos = 0.7;  // gyro axes within 45 deg of vertical are frozen with the yaw
@@ -193,6 +199,8 @@ class Navigator {
   }
   /// A field sample within mag_timeout_s (the magnetometer states on).
   bool mag_live(double t_s) const { return mag_started_ && t_s - last_mag_sample_t_s_ <= cfg_.mag_timeout_s; }
+  /// The magnetometer holds the heading: live, with the field's direction known (the declination prior).
+  bool mag_sees_heading(double t_s) const { return mag_live(t_s) && std::isfinite(alignment_result_.declination_rad); }
   /// The largest latency the longest horizon can serve (two IMU periods of margin).
   double max_gps_latency_s() const { return std::max(0.0, horizon_limit_s() - 2.0 * period_s_ - 0.01); }
   void recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas);

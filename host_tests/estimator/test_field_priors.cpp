@@ -1,5 +1,5 @@
 // The priors on the Earth-field state, the declination (ekf/aiding/declination)
-// and the World Magnetic Model's strength and down component
+// and the World Magnetic Model's strength and inclination
 // (ekf/aiding/field_model): their Jacobians against finite differences over
 // the true field F = F_hat + e - [F x] phi (the invariant field error and the
 // attitude error, state_layout.hpp), at fields of every kind: steep (high
@@ -50,28 +50,30 @@ TEST(Declination, JacobianMatchesFiniteDifferencesOfTheFieldsDirection) {
   }
 }
 
-TEST(FieldModel, JacobianMatchesFiniteDifferencesOfStrengthAndDownComponent) {
+TEST(FieldModel, JacobianMatchesFiniteDifferencesOfStrengthAndInclination) {
   const Eigen::Vector3d model(20.0, 2.0, 45.0);
   for (const Eigen::Vector3d& F_hat : kFields) {
     ErrorStateFilter filter;
     start_with_field(filter, F_hat);
     const Slice field = filter.layout().of(Effect::MagEarthField);
-    const Measurement m = field_model_measurement(filter, model, 5.0, 5.0);
+    const Measurement m = field_model_measurement(filter, model, 5.0, 0.05, 5.0);
     ASSERT_EQ(m.innovation.size(), 2);
+    const auto inclination = [](const Eigen::Vector3d& F) { return std::atan2(F.z(), F.head<2>().norm()); };
     EXPECT_NEAR(m.innovation(0), F_hat.norm() - model.norm(), 1e-12);
-    EXPECT_NEAR(m.innovation(1), F_hat.z() - model.z(), 1e-12);
+    EXPECT_NEAR(m.innovation(1), inclination(F_hat) - inclination(model), 1e-12);
     EXPECT_DOUBLE_EQ(m.R(0, 0), 25.0);
+    EXPECT_DOUBLE_EQ(m.R(1, 1), 0.0025);
     constexpr double kStep = 1e-6;
     for (int k = 0; k < 6; ++k) {
       Eigen::Vector3d e = Eigen::Vector3d::Zero(), phi = Eigen::Vector3d::Zero();
       (k < 3 ? e : phi)(k % 3) = kStep * (k < 3 ? F_hat.norm() : 1.0);
       const Eigen::Vector3d F_true = F_hat + e - F_hat.cross(phi);
       // y(x) = h(F_hat) - h(F_true): the innovation when the truth differs from the estimate by x.
-      const double y[2] = {F_hat.norm() - F_true.norm(), F_hat.z() - F_true.z()};
+      const double y[2] = {F_hat.norm() - F_true.norm(), inclination(F_hat) - inclination(F_true)};
       const Eigen::Index col = k < 3 ? field.start + k : filter.layout().att.start + (k - 3);
       const double dx = k < 3 ? e(k) : phi(k - 3);
       for (Eigen::Index r = 0; r < 2; ++r) {
-        // First order: the step's square (~1e-12 of the field, 5e-11 uT) is the error.
+        // First order: the step's square (~1e-12 of the field: 5e-11 uT, 1e-12 rad) is the error.
         EXPECT_NEAR(m.H(r, col) * dx, y[r], 1e-9) << "field " << F_hat.transpose() << " row " << r << " state " << k;
       }
     }

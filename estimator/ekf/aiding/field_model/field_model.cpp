@@ -1,9 +1,11 @@
 #include "estimator/ekf/aiding/field_model/field_model.hpp"
 
+#include <cmath>
+
 namespace sinu::est {
 
 Measurement field_model_measurement(const ErrorStateFilter& filter, const Eigen::Vector3d& model_field_n_uT,
-                                    double sigma_uT, double gate_sigma) {
+                                    double strength_sigma_uT, double inclination_sigma_rad, double gate_sigma) {
   const StateLayout& L = filter.layout();
   const Eigen::Vector3d F = filter.mag_earth_field_n_uT();
   const Eigen::Index field = L.of(Effect::MagEarthField).start;
@@ -11,14 +13,18 @@ Measurement field_model_measurement(const ErrorStateFilter& filter, const Eigen:
   m.gate_sigma = gate_sigma;
   m.innovation = MeasVec::Zero(2);
   m.H = MeasJacobian::Zero(2, L.dim);
-  // Row 0: the strength; row 1: the down component.
-  const Eigen::Vector3d g_strength = F / F.norm(), g_down = Eigen::Vector3d::UnitZ();
+  // Row 0: the strength; row 1: the inclination I = atan2(F_d, H), H = |F_ne|.
+  const double h = std::hypot(F.x(), F.y()), f2 = F.squaredNorm();
+  const Eigen::Vector3d g_strength = F / F.norm();
+  const Eigen::Vector3d g_incl(-F.z() * F.x() / (h * f2), -F.z() * F.y() / (h * f2), h / f2);
   m.innovation(0) = F.norm() - model_field_n_uT.norm();
-  m.innovation(1) = F.z() - model_field_n_uT.z();
+  m.innovation(1) = std::atan2(F.z(), h) - std::atan2(model_field_n_uT.z(), model_field_n_uT.head<2>().norm());
   m.H.block(0, field, 1, 3) = -g_strength.transpose();
-  m.H.block(1, field, 1, 3) = -g_down.transpose();
-  m.H.block(1, L.att.start, 1, 3) = g_down.cross(F).transpose();
-  m.R = MeasMat::Identity(2, 2) * (sigma_uT * sigma_uT);
+  m.H.block(1, field, 1, 3) = -g_incl.transpose();
+  m.H.block(1, L.att.start, 1, 3) = g_incl.cross(F).transpose();
+  m.R = MeasMat::Zero(2, 2);
+  m.R(0, 0) = strength_sigma_uT * strength_sigma_uT;
+  m.R(1, 1) = inclination_sigma_rad * inclination_sigma_rad;
   return m;
 }
 

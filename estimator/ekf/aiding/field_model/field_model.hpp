@@ -1,5 +1,5 @@
 #pragma once
-// The World Magnetic Model's field strength and its down component as a
+// The World Magnetic Model's field strength and inclination (dip) as a
 // measurement of the Earth-field state, fused once when the field states
 // start (with the declination, aiding/declination, when the measured field is
 // recognised). Why: the field state starts from the first sample, C_nb (m - h),
@@ -7,15 +7,20 @@
 // rotation separates; at rest every small attitude correction turns that
 // direction and leaks it into what the magnetometer sees, and the two wander
 // by tens of uT (and a soft iron learnt on top of them converges wrong). The
-// model knows the Earth's field to ~0.2 uT; the sigma also covers crustal
-// anomalies and a magnetometer's scale error (a few %), which the strength
-// here does not see. Both are invariant to the heading, so an unrecognised
+// model knows the Earth's field to ~0.2 uT; the strength's sigma also covers a
+// magnetometer's scale error (up to ~10 %), the inclination's crustal
+// anomalies and a scale that differs between axes (a few degrees). The
+// inclination, not the down component: with the strength and the down
+// component held, the field could still turn towards the vertical, its
+// horizontal part going to zero at rest (the hard iron taking it), and the
+// declination with it. Both are invariant to the heading, so an unrecognised
 // field (a large hard iron) gets no heading from it: its offset goes to the
 // hard iron.
 // With the invariant field error e (state_layout.hpp), dF = e - [F x] phi, and
 // a scalar h(F) with gradient g: y = h(F_hat) - h_model,
 //   H_field = -g,  H_att = (g x F)^T (zero for the strength, g = F / |F|);
-// the down component: g = (0, 0, 1).
+// the inclination I = atan2(F_d, H), H = |(F_n, F_e)|:
+//   g = (-F_d F_n / H, -F_d F_e / H, H) / |F|^2.
 #include <Eigen/Core>
 
 #include "estimator/ekf/error_state_filter.hpp"
@@ -26,6 +31,6 @@ namespace sinu::est {
 /// Needs the mag_earth_field states (Effect::MagEarthField) in the layout.
 /// model_field_n_uT: the model's field at the site, NED [uT].
 Measurement field_model_measurement(const ErrorStateFilter& filter, const Eigen::Vector3d& model_field_n_uT,
-                                    double sigma_uT, double gate_sigma);
+                                    double strength_sigma_uT, double inclination_sigma_rad, double gate_sigma);
 
 }  // namespace sinu::est
