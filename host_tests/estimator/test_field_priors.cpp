@@ -80,5 +80,15 @@ TEST(FieldModel, JacobianMatchesFiniteDifferencesOfStrengthAndInclination) {
   }
 }
 
+// At a magnetic pole the field estimate can be vertical: the inclination's
+// row stays finite (no 0 / 0 in its gradient).
+TEST(FieldModel, AVerticalFieldGivesAFiniteMeasurement) {
+  ErrorStateFilter filter;
+  start_with_field(filter, Eigen::Vector3d(0.0, 0.0, 58.0));
+  const Measurement m = field_model_measurement(filter, Eigen::Vector3d(20.0, 2.0, 45.0), 5.0, 0.05, 5.0);
+  EXPECT_TRUE(m.innovation.allFinite());
+  EXPECT_TRUE(m.H.allFinite());
+}
+
 }  // namespace
 }  // namespace sinu::test

@@ -1,5 +1,6 @@
 #include "estimator/ekf/aiding/field_model/field_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sinu::est {
@@ -14,7 +15,8 @@ Measurement field_model_measurement(const ErrorStateFilter& filter, const Eigen:
   m.innovation = MeasVec::Zero(2);
   m.H = MeasJacobian::Zero(2, L.dim);
   // Row 0: the strength; row 1: the inclination I = atan2(F_d, H), H = |F_ne|.
-  const double h = std::hypot(F.x(), F.y()), f2 = F.squaredNorm();
+  // (|F_n| / H <= 1 keeps the gradient finite; the floor only avoids 0 / 0 for a vertical field.)
+  const double h = std::max(std::hypot(F.x(), F.y()), 1e-9), f2 = F.squaredNorm();
   const Eigen::Vector3d g_strength = F / F.norm();
   const Eigen::Vector3d g_incl(-F.z() * F.x() / (h * f2), -F.z() * F.y() / (h * f2), h / f2);
   m.innovation(0) = F.norm() - model_field_n_uT.norm();
