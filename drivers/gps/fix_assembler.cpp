@@ -4,6 +4,8 @@
 
 namespace sinu::drivers {
 
+static_assert(std::variant_size_v<NmeaMessage> <= 32, "a type bit each in a 32-bit mask");
+
 namespace {
 
 std::optional<UtcMs> time_of(const NmeaMessage& msg) {
@@ -89,6 +91,7 @@ bool FixAssembler::emit(GpsFix& out) {
   }
   out = open_;
   is_open_ = false;
+  emitted_types_ = open_types_;
   if (last_type_ == cycle_end_) short_epochs_ = 0;
   have_emitted_ = true;
   emitted_utc_ms_ = open_.utc_ms;
@@ -104,15 +107,25 @@ bool FixAssembler::add(const NmeaMessage& msg, double arrival_s, GpsFix& out) {
     learn_cycle_end();  // closed by a time change
     emitted = emit(out);
   }
+  const std::uint32_t bit = 1u << type;
   if (!is_open_ && t && have_emitted_ && *t == emitted_utc_ms_) {
-    // A sentence of the epoch just emitted (it came after the learned ender):
-    // the cycle ends later than thought. Counted, not made into an epoch.
+    // A sentence of the epoch just emitted. Counted, not made into an epoch.
     ++late_;
-    cycle_end_ = type;
+    dropping_ = true;
+    if (!(emitted_types_ & bit)) {  // it came after the learned ender: the cycle ends later than thought
+      cycle_end_ = type;
+      emitted_types_ |= bit;
+    }  // else the receiver repeats the epoch: the ender stands
+    return emitted;
+  }
+  if (t) dropping_ = false;
+  if (!is_open_ && !t && dropping_) {  // follows a late sentence: belongs to the emitted epoch
+    ++late_;
     return emitted;
   }
   if (!is_open_) {
     open_ = GpsFix{};
+    open_types_ = 0;
     open_.arrival_s = arrival_s;
     is_open_ = true;
     has_time_ = false;
@@ -122,6 +135,7 @@ bool FixAssembler::add(const NmeaMessage& msg, double arrival_s, GpsFix& out) {
     has_time_ = true;
   }
   merge(msg);
+  open_types_ |= bit;
   last_type_ = type;
   if (!emitted && type == cycle_end_ && has_time_) emitted = emit(out);
   return emitted;
