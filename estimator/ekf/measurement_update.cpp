@@ -33,6 +33,7 @@ UpdateResult fuse_measurement(StateMat& P, StateVec& dx, const Measurement& m, c
   for (Eigen::Index i = 0; i < rows; ++i) {
     r.innovation(i) = m.innovation(i);
     r.innovation_sigma(i) = std::sqrt(std::max(S(i, i), 0.0));
+    r.noise_sigma(i) = std::sqrt(std::max(m.R(i, i), 0.0));
     r.test_ratio(i) = m.innovation(i) * m.innovation(i) / (m.gate_sigma * m.gate_sigma * S(i, i));
     if (!std::isfinite(r.test_ratio(i)) || r.test_ratio(i) > 1.0) pass = false;
   }

@@ -26,6 +26,7 @@ struct UpdateResult {
   Eigen::Index rows = 0;
   Eigen::Vector3d innovation = Eigen::Vector3d::Zero();
   Eigen::Vector3d innovation_sigma = Eigen::Vector3d::Zero();  // sqrt(S_ii)
+  Eigen::Vector3d noise_sigma = Eigen::Vector3d::Zero();       // sqrt(R_ii): the measurement noise used
   Eigen::Vector3d test_ratio = Eigen::Vector3d::Zero();
   double nis = 0.0;  // y^T S^-1 y
   bool accepted = false;

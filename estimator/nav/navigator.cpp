@@ -52,6 +52,9 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   last_gnss_speed_m_s_ = 1e9;
   last_zupt_t_s_ = last_nhc_t_s_ = 0.0;
   mag_noise_.configure(cfg.mag_noise, cfg.mag_sigma_uT);
+  pos_scale_h_.configure(cfg.gnss_position_scale, 1.0);
+  pos_scale_v_.configure(cfg.gnss_position_scale, 1.0);
+  last_pos_scale_t_s_ = last_stated_t_s_ = kNever;
   mag_reject_since_s_ = -1.0;
   have_prev_ = have_raw_ = mag_started_ = in_timeout_ = false;
   last_gap_t_s_ = -1e300;
@@ -307,7 +310,7 @@ void Navigator::widen_for_faults(const ImuSample& s, double dt) {
 
 void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
   while (!gnss_.empty()) {
-    const GnssObservation z = gnss_.front();
+    GnssObservation z = gnss_.front();
     const double t_meas = z.arrival_s - filter_.gps_latency_s();
     if (t_meas > t_now) break;
     gnss_.pop();
@@ -319,6 +322,16 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
       continue;
     }
     if (z.has_position) {
+      if (!z.sigma_is_guess) {
+        last_stated_sigma_ned_m_ = z.sigma_ned_m;
+        last_stated_t_s_ = t_meas;
+      } else if (t_meas - last_stated_t_s_ <= cfg_.stated_sigma_hold_s) {
+        z.sigma_ned_m = last_stated_sigma_ned_m_;  // a receiver that skipped its GST this once
+        z.sigma_is_guess = false;
+      } else {
+        z.sigma_ned_m.head<2>() *= pos_scale_h_.sigma();
+        z.sigma_ned_m.z() *= pos_scale_v_.sigma();
+      }
       filter_.set_gps_bias_sigma(z.sigma_ned_m, t_meas - last_gnss_pos_t_s_);
       last_gnss_pos_t_s_ = t_meas;
       bool ok = fuse(AidingSource::GnssPosition,
@@ -335,6 +348,7 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
         ok = fuse(AidingSource::GnssPosition, gnss_position_measurement(filter_, nav_, dt_back, z, cfg_.gate_sigma),
                   t_meas);
       }
+      if (z.sigma_is_guess) learn_position_scale(t_meas);
       recover(recovery_.on_position(t_meas, ok, innovation_h, z.sigma_ned_m.head<2>().norm()), z, dt_back, t_meas);
     }
     if (z.has_velocity) last_gnss_speed_m_s_ = z.v_ne_m_s.norm();
@@ -355,6 +369,16 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
       recover(recovery_.on_velocity(t_meas, ok, z.v_ne_m_s.norm()), z, dt_back, t_meas);
     }
   }
+}
+
+// The latest position update, made with a guessed sigma, teaches its factor
+// (rows N, E horizontally; D vertically).
+void Navigator::learn_position_scale(double t_meas) {
+  if (last_result_.rows < 3) return;
+  const double dt = last_pos_scale_t_s_ == kNever ? 0.0 : t_meas - last_pos_scale_t_s_;
+  pos_scale_h_.learn_scale(last_result_, 0, 2, dt);
+  pos_scale_v_.learn_scale(last_result_, 2, 1, dt);
+  last_pos_scale_t_s_ = t_meas;
 }
 
 void Navigator::recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas) {

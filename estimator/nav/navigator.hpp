@@ -98,6 +98,13 @@ struct NavigatorConfig {
   // observation's sigma) and the magnetometer.
   NoiseAdapterConfig gnss_velocity_noise{true, 60.0, 0.02, 2.0};
   NoiseAdapterConfig mag_noise{true, 60.0, 0.1, 5.0};
+  // A GNSS position sigma the receiver does not state (no GST: DOP x UERE,
+  // or a fixed guess without DOP) times a learnt factor, horizontal and
+  // vertical: a receiver 5x better or 4x worse than the guess. An epoch
+  // without GST from a receiver that sent one within stated_sigma_hold_s
+  // takes that one instead (uav_log171's u-blox skips 17 of 959).
+  NoiseAdapterConfig gnss_position_scale{true, 60.0, 0.2, 4.0};
+  double stated_sigma_hold_s = 5.0;
   double mag_period_s = 0.1;          // fuse at most this often (10 Hz)
   // A magnetometer rejected this long while the GNSS velocity vouches for the
   // attitude is disturbed by a new field of the vehicle's own (motor currents
@@ -182,6 +189,8 @@ class Navigator {
   /// The noise sigmas in use now (learnt, or as configured).
   double gnss_velocity_sigma_m_s() const { return vel_noise_.sigma(); }
   double mag_sigma_uT() const { return mag_noise_.sigma(); }
+  /// The factor on unstated GNSS position sigmas (1 while every fix had GST).
+  Eigen::Vector2d gnss_position_scale() const { return {pos_scale_h_.sigma(), pos_scale_v_.sigma()}; }
 
  private:
   void push_filtered(ImuSample s);
@@ -204,6 +213,7 @@ class Navigator {
   /// The largest latency the longest horizon can serve (two IMU periods of margin).
   double max_gps_latency_s() const { return std::max(0.0, horizon_limit_s() - 2.0 * period_s_ - 0.01); }
   void recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas);
+  void learn_position_scale(double t_meas);
   void update_health(double t_now, double dt);
   void emit();
 
@@ -239,14 +249,15 @@ class Navigator {
   double horizontal_accel_m_s2_ = 0.0;                   // smoothed (1 s) horizontal specific force, NED
   double accel_diff_var_ = 0.0, gyro_diff_var_ = 0.0;    // mean squared sample-to-sample differences
   StateMask frozen_;
-  NoiseAdapter vel_noise_, mag_noise_;
+  NoiseAdapter vel_noise_, mag_noise_, pos_scale_h_, pos_scale_v_;
   Stillness stillness_;
   VehicleDetector vehicle_;
   double last_gnss_speed_m_s_ = 1e9, last_zupt_t_s_ = 0.0, last_nhc_t_s_ = 0.0;
   bool still_now_ = false;
   bool vel_noise_started_ = false;
   UpdateResult last_result_;
-  double last_vel_update_t_s_ = 0.0;
+  double last_vel_update_t_s_ = 0.0, last_pos_scale_t_s_ = 0.0, last_stated_t_s_ = 0.0;
+  Eigen::Vector3d last_stated_sigma_ned_m_ = Eigen::Vector3d::Zero();
   // Health.
   std::uint32_t events_ = 0, state_flags_ = 0;
   std::array<double, kAidingSourceCount> test_ratio_{};

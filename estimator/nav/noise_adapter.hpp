@@ -18,6 +18,11 @@
 // ones alone shrinks R while a disturbance (motor currents at a magnetometer)
 // is rejected, until nothing is accepted; counted this way a disturbed sensor
 // is trusted less, and a single outlier moves R by little.
+//
+// learn_scale() learns a factor k on a sigma that varies from update to
+// update (a GNSS position sigma guessed as DOP x UERE): rows first..first+
+// count-1 are divided by their noise sigma over k (the guess), so sigma() is
+// k and the update after uses k times the next guess.
 #include <algorithm>
 #include <cmath>
 
@@ -62,6 +67,18 @@ class NoiseAdapter {
     samples_ = samples_ * std::exp(-std::max(dt_s, 0.0) / cfg_.time_constant_s) + weight;
     variance_ += std::min(1.0, weight / samples_) * (sample - variance_);
     variance_ = std::clamp(variance_, cfg_.min_sigma * cfg_.min_sigma, cfg_.max_sigma * cfg_.max_sigma);
+  }
+  /// One update made with noise k x guess on rows first..first+count-1 (k = sigma()).
+  void learn_scale(const UpdateResult& r, Eigen::Index first, Eigen::Index count, double dt_s) {
+    UpdateResult n;
+    for (Eigen::Index i = 0; i < count && first + i < r.rows; ++i) {
+      const double guess = r.noise_sigma(first + i) / sigma();
+      if (!(guess > 0.0)) return;
+      n.innovation(i) = r.innovation(first + i) / guess;
+      n.innovation_sigma(i) = r.innovation_sigma(first + i) / guess;
+      n.rows = i + 1;
+    }
+    learn(n, dt_s);
   }
 
  private:

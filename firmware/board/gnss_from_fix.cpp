@@ -10,6 +10,7 @@ namespace sinu::board {
 
 bool gnss_from_fix(const drivers::GpsFix& fix, const GnssSigmaConfig& cfg, est::GnssObservation& out) {
   constexpr double kDegToRad = std::numbers::pi / 180.0;
+  constexpr int kRtkFixed = 4, kRtkFloat = 5;  // GGA fix quality
   if (!fix.has_position()) return false;
   const auto h = fix.ellipsoid_height_m();
   if (!h) return false;
@@ -22,11 +23,16 @@ bool gnss_from_fix(const drivers::GpsFix& fix, const GnssSigmaConfig& cfg, est::
   Eigen::Vector3d sig;
   if (fix.has_gst && fix.sigma_lat_m && fix.sigma_lon_m && fix.sigma_alt_m) {
     sig = {*fix.sigma_lat_m, *fix.sigma_lon_m, *fix.sigma_alt_m};
+  } else if (fix.quality == kRtkFixed || fix.quality == kRtkFloat) {
+    const double s = fix.quality == kRtkFixed ? cfg.rtk_fixed_sigma_m : cfg.rtk_float_sigma_m;
+    sig = {s, s, 2.0 * s};  // the receiver's claim: centimetres (fixed) or decimetres (float)
   } else if (fix.hdop) {
     const double vdop = fix.vdop.value_or(1.5 * *fix.hdop);
     sig = {*fix.hdop * cfg.uere_m / std::sqrt(2.0), *fix.hdop * cfg.uere_m / std::sqrt(2.0), vdop * cfg.uere_m};
+    out.sigma_is_guess = true;
   } else {
     sig = Eigen::Vector3d::Constant(cfg.no_dop_sigma_m);
+    out.sigma_is_guess = true;
   }
   for (Eigen::Index i = 0; i < 3; ++i) sig(i) = std::max(sig(i) * cfg.position_sigma_scale, cfg.min_sigma_m);
   out.sigma_ned_m = sig;

@@ -58,6 +58,7 @@ bool NavUnit::init(const NavUnitConfig& c, est::NavObserver* observer, std::stri
   cfg.mag_sigma_uT = c.mag_sigma_uT;
   cfg.gnss_velocity_noise.enabled = c.adapt_velocity_noise;
   cfg.mag_noise.enabled = c.adapt_mag_noise;
+  cfg.gnss_position_scale.enabled = c.adapt_position_scale;
   cfg.alignment.use_mag = c.use_mag;
   if (std::isfinite(c.mag_declination_deg)) {
     cfg.alignment.declination_known = true;

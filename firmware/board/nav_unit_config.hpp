@@ -36,6 +36,7 @@ struct NavUnitConfig {
   // starting from the sigmas above (a sigma the user gives is kept fixed).
   bool adapt_velocity_noise = true;
   bool adapt_mag_noise = true;
+  bool adapt_position_scale = true;  // a factor on GNSS position sigmas no GST states
   bool use_mag = true;
   est::VehicleKind vehicle = est::VehicleKind::Auto;  // ground: non-holonomic constraint; auto: detected
   // IMU full scales for the clipping screen; 0: unknown (on the board and for

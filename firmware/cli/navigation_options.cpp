@@ -43,7 +43,8 @@ void NavigationCliOptions::add_to(CLI::App& sub) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   sub.add_option("--gps-pos-sigma-scale", opt.unit.sigma.position_sigma_scale,
-                 "GNSS position sigma: the receiver's (GST, or HDOP x UERE) times this (diagnose says when it is off)")
+                 "GNSS position sigma: the receiver's (GST, or HDOP x UERE) times this (diagnose says when it is off); "
+                 "without GST a factor is otherwise learnt from the innovations")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   sub.add_option("--mag-sigma", opt.unit.mag_sigma_uT,
@@ -80,6 +81,7 @@ bool NavigationCliOptions::resolve(std::string& error) {
   // A dataset's full scales only when given (a recording's come from its driver settings).
   if (app && app->count("--gps-vel-sigma")) opt.unit.adapt_velocity_noise = false;
   if (app && app->count("--mag-sigma")) opt.unit.adapt_mag_noise = false;
+  if (app && app->count("--gps-pos-sigma-scale")) opt.unit.adapt_position_scale = false;
   if (imu.given("--accel-range")) opt.unit.accel_range_m_s2 = imu.values.imu.accel_range_g * 9.80665;
   if (imu.given("--gyro-range")) opt.unit.gyro_range_rad_s = imu.values.imu.gyro_range_dps * 3.14159265358979323846 / 180.0;
   if (!lever_arm.empty()) {

@@ -76,5 +76,36 @@ TEST(NoiseAdapter, ADisturbanceRaisesTheSigma) {
   EXPECT_GT(a.sigma(), 1.0);
 }
 
+// A receiver without GST: its sigma is guessed as DOP x UERE, the DOP
+// changing from fix to fix (here 0.6-3.0), and the truth is 0.8 m per axis
+// whatever the DOP (guess / truth 1.3-6.6 and the fix-to-fix spread a
+// factor of 5). The factor learnt on the guess must still make each fix's
+// sigma the true one on average: the weighted mean of y^2 / guess^2 is k^2.
+// 3000 fixes (10 min at 5 Hz) over a 60-s (300-fix) memory of 2 rows: ~600
+// samples, 5.8 % on k^2, 2.9 % on k; 10 % is about three of those.
+TEST(NoiseAdapter, LearnsTheFactorOnAGuessThatChangesEveryUpdate) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> dop(0.6, 3.0);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  const double uere = 2.5 / std::sqrt(2.0), truth = 0.8, hph = 0.05;
+  NoiseAdapter k;
+  k.configure(NoiseAdapterConfig{true, 60.0, 0.2, 4.0}, 1.0);
+  for (int n = 0; n < 3000; ++n) {
+    const double guess = dop(rng) * uere;
+    const double r_used = k.sigma() * guess;  // what the navigator fuses with
+    est::UpdateResult r;
+    r.rows = 3;  // N, E learnt here; D is another factor's row
+    for (Eigen::Index i = 0; i < 3; ++i) {
+      r.innovation(i) = std::sqrt(hph + truth * truth) * unit(rng);
+      r.innovation_sigma(i) = std::sqrt(hph + r_used * r_used);
+      r.noise_sigma(i) = r_used;
+    }
+    k.learn_scale(r, 0, 2, 0.2);
+  }
+  // E[y^2 / guess^2] = 0.8^2 E[1/d^2] / uere^2, and E[1/d^2] = 1 / (0.6 x 3) for d uniform on [0.6, 3].
+  const double k_expected = truth / (uere * std::sqrt(0.6 * 3.0));
+  EXPECT_NEAR(k.sigma(), k_expected, 0.10 * k_expected);
+}
+
 }  // namespace
 }  // namespace sinu::test

@@ -19,6 +19,7 @@
 
 #include "host_tests/support/nav_error.hpp"
 #include "host_tests/support/read_json.hpp"
+#include "host_tests/support/replay_helpers.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/shared_data.hpp"
 #include "host_tests/support/temp_dir.hpp"
@@ -28,33 +29,18 @@ namespace {
 
 /// A copy of dataset `src` whose gps.nmea has no RMC and no VTG sentence.
 std::string without_velocity_sentences(const std::string& src, const std::string& dst) {
-  std::filesystem::create_directories(dst);
-  for (const auto& e : std::filesystem::directory_iterator(src)) {
-    if (e.path().filename() != "gps.nmea") std::filesystem::copy_file(e.path(), std::filesystem::path(dst) / e.path().filename());
-  }
-  std::ifstream in(src + "/gps.nmea");
-  std::ofstream out(dst + "/gps.nmea");
-  std::string line;
   std::size_t kept = 0, dropped = 0;
-  while (std::getline(in, line)) {
-    if (line.find("RMC,") != std::string::npos || line.find("VTG,") != std::string::npos) {
-      ++dropped;
-      continue;
-    }
-    out << line << '\n';
-    ++kept;
-  }
+  copy_dataset_editing_gps(src, dst, [&](std::string& line) {
+    const bool velocity = line.find("RMC,") != std::string::npos || line.find("VTG,") != std::string::npos;
+    ++(velocity ? dropped : kept);
+    return !velocity;
+  });
   EXPECT_GT(kept, 0u);
   EXPECT_GT(dropped, 0u);
   return dst;
 }
 
-nlohmann::json replay(const std::vector<std::string>& args) {
-  const auto r = run_sinu(args);
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  const auto out = std::find(args.begin(), args.end(), std::string("--out"));
-  return read_json(*(out + 1) + "/summary.json");
-}
+nlohmann::json replay(const std::vector<std::string>& args) { return replay_summary(args); }
 
 TEST(PositionOnlyReceiver, AlignsOnTheCourseOfDifferencedFixesWithoutAMagnetometer) {
   TempDir dir;
@@ -111,14 +97,7 @@ TEST(PositionOnlyReceiver, TheRealDriveWithGgaAndGstOnlyDeadReckonsItsOutages) {
   SINU_REQUIRE_SHARED(drive, "data/real/drive_0708");
   TempDir dir;
   const std::string gga = without_velocity_sentences(drive, dir.file("gga"));
-  // The ten 15-s outages, every 45 s from 60 s after the car first
-  // passes 3 m/s (t = 243300.75 s, test_real_logs.cpp).
-  std::string outages;
-  for (int i = 0; i < 10; ++i) {
-    if (i > 0) outages += ',';
-    outages += std::to_string(243360.75 + 45.0 * i);
-    outages += ":15";
-  }
+  const std::string outages = drive_0708_outages();
   const auto full = replay({"replay", "--in", drive, "--outage", outages, "--quiet", "--out", dir.file("r_full")});
   const auto s = replay({"replay", "--in", gga, "--outage", outages, "--quiet", "--out", dir.file("r_gga")});
   ASSERT_TRUE(s["aligned"].get<bool>()) << s["health"].dump();

@@ -11,6 +11,7 @@ struct GnssObservation {
   bool has_position = false;
   double lat_rad = 0.0, lon_rad = 0.0, h_m = 0.0;  // antenna, WGS-84 ellipsoidal
   Eigen::Vector3d sigma_ned_m = Eigen::Vector3d::Constant(3.0);
+  bool sigma_is_guess = false;  // not the receiver's statement (no GST: DOP x UERE): the navigator rescales it
   bool has_velocity = false;
   Eigen::Vector2d v_ne_m_s = Eigen::Vector2d::Zero();
   double sigma_vel_m_s = 0.3;

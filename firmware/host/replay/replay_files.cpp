@@ -153,7 +153,10 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
   sj["noise"] = {{"gnss_velocity_sigma_m_s", r.gnss_velocity_sigma_m_s},
                  {"gnss_velocity_learnt", opt.unit.adapt_velocity_noise},
                  {"magnetometer_sigma_uT", r.mag_sigma_uT},
-                 {"magnetometer_learnt", opt.unit.adapt_mag_noise}};
+                 {"magnetometer_learnt", opt.unit.adapt_mag_noise},
+                 {"gnss_position_scale_learnt", opt.unit.adapt_position_scale},
+                 {"gnss_position_scale_h", r.gnss_position_scale.x()},
+                 {"gnss_position_scale_v", r.gnss_position_scale.y()}};
   sj["gnss_only_rmse"] = {{"pos_h_m", num(r.gnss_rmse_pos_h_m())}, {"pos_v_m", num(r.gnss_rmse_pos_v_m())},
                           {"fixes", m.gnss_compared}, {"truth_is_gnss_input", r.truth_is_gnss_input()}};
   json sens = json::object();

@@ -69,6 +69,7 @@ struct ReplayResult {
   est::AlignmentResult alignment;  // how the first solution came about (valid when aligned)
   SourceCounters source;
   double gnss_velocity_sigma_m_s = 0.0, mag_sigma_uT = 0.0;  // in use at the end (learnt or fixed)
+  Eigen::Vector2d gnss_position_scale{1.0, 1.0};  // horizontal, vertical factor on unstated (no GST) sigmas
   std::string note;               // what the user must know ("" if nothing): truncated recording, dropped rows
 
   HealthStatus health() const;

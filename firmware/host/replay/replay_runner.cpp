@@ -199,6 +199,7 @@ void collect(const board::NavUnit& unit, ReplayResult& r) {
                vd.vertical_rms_m_s(), vd.moving_s()};
   r.gnss_velocity_sigma_m_s = nav.gnss_velocity_sigma_m_s();
   r.mag_sigma_uT = nav.mag_sigma_uT();
+  r.gnss_position_scale = nav.gnss_position_scale();
 }
 
 }  // namespace
