@@ -53,7 +53,11 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
                   num(c.velocity_resets).c_str(), num(c.yaw_resets).c_str());
       break;
     case replay::HealthStatus::NotAligned:
-      std::printf("  NOT ALIGNED: no navigation solution (no rest period and no GNSS motion to align on)\n");
+      if (r.gnss.used == 0)
+        std::printf("  NOT ALIGNED: no navigation solution (no GNSS position in the data: gps.nmea absent, empty or "
+                    "without a fix; the INS needs one to start from)\n");
+      else
+        std::printf("  NOT ALIGNED: no navigation solution (no rest period and no GNSS motion to align on)\n");
       break;
     case replay::HealthStatus::Ok: break;
   }

@@ -70,6 +70,20 @@ TEST(Cli, InspectSummarisesAValidDataset) {
   EXPECT_NE(r.out.find("\"corrupt\": 1"), std::string::npos) << r.out;
 }
 
+// An IMU-only dataset (a bench session given to replay by mistake): the INS
+// has no position to start from, and says that rather than blaming a
+// missing rest period (it was at rest).
+TEST(Cli, ReplayWithoutGnssSaysWhyItCannotAlign) {
+  sinu::test::TempDir dir;
+  std::string imu = kHeader;
+  for (int i = 0; i < 400; ++i) imu += std::to_string(50.0 + 0.025 * i) + ",0,0,-9.8,0,0,0,,,,25\n";
+  dir.write("imu.csv", imu);
+  const auto r = run_sinu({"replay", "--in", dir.path().string(), "--out", dir.file("out")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("NOT ALIGNED"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("no GNSS position in the data"), std::string::npos) << r.out;
+}
+
 TEST(Cli, DiagnoseWithoutItsRequiredOptionsIsAUsageError) {
   const auto r = run_sinu({"diagnose"});
   EXPECT_EQ(r.exit_code, 2);
