@@ -14,12 +14,15 @@
 // are printed for docs/experiments.md.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "host_tests/support/dataset_faults.hpp"
 #include "host_tests/support/nav_error.hpp"
 #include "host_tests/support/read_json.hpp"
+#include "host_tests/support/replay_helpers.hpp"
+#include "host_tests/support/shared_data.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
@@ -60,6 +63,49 @@ TEST_P(AirStart, AlignsWithinTenSecondsAndKeepsTheFullReplaysAccuracy) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, AirStart, ::testing::Values(5, 21));
+
+/// RMS of the largest horizontal drift over the outages of a replay that start after `after_s`.
+double outage_drift_rms_after(const nlohmann::json& summary, double after_s, int& scored) {
+  double sum = 0.0;
+  scored = 0;
+  for (const auto& o : summary["outages"]) {
+    if (o["start"].get<double>() <= after_s || o["max_drift_h_m"].is_null()) continue;
+    sum += o["max_drift_h_m"].get<double>() * o["max_drift_h_m"].get<double>();
+    ++scored;
+  }
+  return scored ? std::sqrt(sum / scored) : NAN;
+}
+
+// The real car (drive_0708, no magnetometer) cut to start at 243420 s, while
+// driving: no rest, the heading from the GNSS course. Scored on the issue's
+// outages that start a minute or more after the cut (seven, the first 75 s
+// after it) against the full replay's drift in the same outages. The one
+// 30 s after the cut (22 s after the alignment) drifts 6.4 m against 1.2
+// (docs/experiments.md), not scored.
+TEST(AirStart, TheRealDriveStartedWhileDrivingAlignsAndDeadReckonsItsOutages) {
+  SINU_REQUIRE_SHARED(drive, "data/real/drive_0708");
+  TempDir dir;
+  const double cut_t = 243420.0;
+  const std::string cut = dir.file("cut");
+  inject_faults(drive, cut, {DropLeadingSeconds{cut_t - dataset_times(drive).imu.first_s}});
+  const double t_first = dataset_times(cut).imu.first_s;
+  const std::string outages = drive_0708_outages();
+  const auto full = replay_summary({"replay", "--in", drive, "--outage", outages, "--quiet", "--out", dir.file("f")});
+  const auto s = replay_summary({"replay", "--in", cut, "--outage", outages, "--quiet", "--out", dir.file("c")});
+  ASSERT_TRUE(s["aligned"].get<bool>()) << s["health"].dump();
+  EXPECT_EQ(s["health"]["status"], "ok") << s["health"].dump();
+  EXPECT_LT(s["aligned_at_s"].get<double>() - t_first, 10.0);  // measured 8.5 s, on the GNSS course
+  int scored_cut = 0, scored_full = 0;
+  const double drift_cut = outage_drift_rms_after(s, t_first + 60.0, scored_cut);
+  const double drift_full = outage_drift_rms_after(full, t_first + 60.0, scored_full);
+  EXPECT_EQ(scored_cut, 7);
+  EXPECT_EQ(scored_full, 7);
+  // Measured 3.64 against 2.87 m (27 %): the first two outages, 75 and 120 s
+  // after the cut, fall inside the convergence the simulated cuts take too
+  // (docs/experiments.md); the last five are within 0.3 m of the full
+  // replay's. 1.5x guards that, short of the 20 % (open).
+  EXPECT_LT(drift_cut, 1.5 * drift_full) << drift_cut << " against " << drift_full;
+}
 
 }  // namespace
 }  // namespace sinu::test
