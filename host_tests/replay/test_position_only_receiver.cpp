@@ -40,15 +40,13 @@ std::string without_velocity_sentences(const std::string& src, const std::string
   return dst;
 }
 
-nlohmann::json replay(const std::vector<std::string>& args) { return replay_summary(args); }
-
 TEST(PositionOnlyReceiver, AlignsOnTheCourseOfDifferencedFixesWithoutAMagnetometer) {
   TempDir dir;
   const std::string flight = dir.file("flight");
   ASSERT_EQ(run_sinu({"simulate", "flight", "--out", flight, "--seed", "13", "--duration", "600"}).exit_code, 0);
   const std::string gga = without_velocity_sentences(flight, dir.file("gga"));
-  const auto full = replay({"replay", "--in", flight, "--no-mag", "--quiet", "--out", dir.file("r_full")});
-  const auto s = replay({"replay", "--in", gga, "--no-mag", "--quiet", "--out", dir.file("r_gga")});
+  const auto full = replay_summary({"replay", "--in", flight, "--no-mag", "--quiet", "--out", dir.file("r_full")});
+  const auto s = replay_summary({"replay", "--in", gga, "--no-mag", "--quiet", "--out", dir.file("r_gga")});
   ASSERT_TRUE(s["aligned"].get<bool>()) << s["health"].dump();
   EXPECT_EQ(s["alignment"]["heading_from"], "GNSS course");
   EXPECT_EQ(s["health"]["status"], "ok") << s["health"].dump();
@@ -66,8 +64,8 @@ TEST(PositionOnlyReceiver, WithAMagnetometerTheUndatedModelGivesTheHeadingAFewDe
   const std::string flight = dir.file("flight");
   ASSERT_EQ(run_sinu({"simulate", "flight", "--out", flight, "--seed", "21", "--duration", "600"}).exit_code, 0);
   const std::string gga = without_velocity_sentences(flight, dir.file("gga"));
-  const auto full = replay({"replay", "--in", flight, "--quiet", "--out", dir.file("r_full")});
-  const auto s = replay({"replay", "--in", gga, "--quiet", "--out", dir.file("r_gga")});
+  const auto full = replay_summary({"replay", "--in", flight, "--quiet", "--out", dir.file("r_full")});
+  const auto s = replay_summary({"replay", "--in", gga, "--quiet", "--out", dir.file("r_gga")});
   ASSERT_TRUE(s["aligned"].get<bool>()) << s["health"].dump();
   EXPECT_NE(s["alignment"]["heading_from"].get<std::string>().find("no date"), std::string::npos)
       << s["alignment"].dump();
@@ -84,7 +82,7 @@ TEST(PositionOnlyReceiver, TheRealQuadcopterWithGgaAndGstOnlyKeepsItsAttitude) {
   SINU_REQUIRE_SHARED(uav, "data/real/uav_log171");
   TempDir dir;
   const std::string gga = without_velocity_sentences(uav, dir.file("gga"));
-  const auto s = replay({"replay", "--in", gga, "--quiet", "--out", dir.file("r_gga")});
+  const auto s = replay_summary({"replay", "--in", gga, "--quiet", "--out", dir.file("r_gga")});
   EXPECT_EQ(s["health"]["status"], "ok") << s["health"].dump();
   EXPECT_NE(s["alignment"]["heading_from"].get<std::string>().find("no date"), std::string::npos);
   // Against the autopilot's EKF (a peer): measured 3.09 deg, 0.34 m (with
@@ -98,8 +96,8 @@ TEST(PositionOnlyReceiver, TheRealDriveWithGgaAndGstOnlyDeadReckonsItsOutages) {
   TempDir dir;
   const std::string gga = without_velocity_sentences(drive, dir.file("gga"));
   const std::string outages = drive_0708_outages();
-  const auto full = replay({"replay", "--in", drive, "--outage", outages, "--quiet", "--out", dir.file("r_full")});
-  const auto s = replay({"replay", "--in", gga, "--outage", outages, "--quiet", "--out", dir.file("r_gga")});
+  const auto full = replay_summary({"replay", "--in", drive, "--outage", outages, "--quiet", "--out", dir.file("r_full")});
+  const auto s = replay_summary({"replay", "--in", gga, "--outage", outages, "--quiet", "--out", dir.file("r_gga")});
   ASSERT_TRUE(s["aligned"].get<bool>()) << s["health"].dump();
   EXPECT_EQ(s["health"]["status"], "ok") << s["health"].dump();
   EXPECT_NEAR(s["aligned_at_s"].get<double>(), full["aligned_at_s"].get<double>(), 1.0);

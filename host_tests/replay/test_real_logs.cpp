@@ -20,6 +20,7 @@
 #include <string>
 
 #include "host_tests/support/read_json.hpp"
+#include "host_tests/support/replay_helpers.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/shared_data.hpp"
 #include "host_tests/support/temp_dir.hpp"
@@ -45,12 +46,7 @@ TEST(RealLogs, TheDriveIsFoundToBeACarAndItsTenOutagesDriftUnderEightMetres) {
   SINU_REQUIRE_SHARED(drive, "data/real/drive_0708");
   const double moving = first_moving_s(drive + "/truth.csv", 3.0);
   ASSERT_TRUE(std::isfinite(moving));
-  std::string outages;
-  for (int i = 0; i < 10; ++i) {
-    if (i > 0) outages += ',';
-    outages += std::to_string(moving + 60.0 + 45.0 * i);
-    outages += ":15";
-  }
+  const std::string outages = outage_schedule(moving + 60.0);
   TempDir dir;
   const auto r = run_sinu({"replay", "--in", drive, "--outage", outages, "--out", dir.file("out")});
   ASSERT_EQ(r.exit_code, 0) << r.err;

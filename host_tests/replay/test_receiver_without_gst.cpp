@@ -56,8 +56,6 @@ std::string without_gst(const std::string& src, const std::string& dst, const st
   return dst;
 }
 
-nlohmann::json replay(const std::vector<std::string>& args) { return replay_summary(args); }
-
 // The simulator's receiver errs by 1.26 m per horizontal axis (GM 1.2 m over
 // 120 s plus 0.4 m white; hidden.json) whatever its HDOP. Written as HDOP 0.3
 // (a guess of 0.53 m, 2.4x too small) and HDOP 3.0 (5.3 m, 4.2x too large).
@@ -71,11 +69,11 @@ TEST(ReceiverWithoutGst, LearnsTheSigmaItsHdopGetsWrong) {
   const auto hidden = read_json(dir.file("hidden.json"))["gps_error_model"];
   const double true_sigma_h = std::hypot(hidden["position_gm_sigma_ned_m"][0].get<double>(),
                                          hidden["position_white_sigma_ned_m"][0].get<double>());
-  const auto stated = replay({"replay", "--in", flight, "--quiet", "--out", dir.file("r_gst")});
+  const auto stated = replay_summary({"replay", "--in", flight, "--quiet", "--out", dir.file("r_gst")});
   for (const std::string hdop : {"0.3", "3.0"}) {
     SCOPED_TRACE("HDOP " + hdop);
     const std::string in = without_gst(flight, dir.file("h" + hdop), hdop);
-    const auto s = replay({"replay", "--in", in, "--quiet", "--out", dir.file("r" + hdop)});
+    const auto s = replay_summary({"replay", "--in", in, "--quiet", "--out", dir.file("r" + hdop)});
     EXPECT_EQ(s["health"]["status"], "ok") << s["health"].dump();
     const double guess = std::stod(hdop) * 2.5 / std::sqrt(2.0);
     // Learnt from 4500 fixes over a 60-s memory of GM-correlated errors:
@@ -98,7 +96,7 @@ TEST(ReceiverWithoutGst, LearnsTheSigmaItsHdopGetsWrong) {
 TEST(ReceiverWithoutGst, TheRealQuadcopterBeatsItsFixesAgainstThePeer) {
   SINU_REQUIRE_SHARED(uav, "data/real/uav_log171");
   TempDir dir;
-  const auto s = replay({"replay", "--in", without_gst(uav, dir.file("nogst")), "--quiet", "--out", dir.file("r")});
+  const auto s = replay_summary({"replay", "--in", without_gst(uav, dir.file("nogst")), "--quiet", "--out", dir.file("r")});
   EXPECT_EQ(s["health"]["status"], "ok") << s["health"].dump();
   // HDOP 1.59 guesses 2.8 m; the learnt factor reaches its 0.2 floor (GST
   // said 0.5-1 m). Against the autopilot's EKF: measured 0.46 m (with GST
@@ -110,8 +108,8 @@ TEST(ReceiverWithoutGst, TheRealDriveTakesItsRtkQualityAsStated) {
   SINU_REQUIRE_SHARED(drive, "data/real/drive_0708");
   TempDir dir;
   const std::string outages = drive_0708_outages();
-  const auto full = replay({"replay", "--in", drive, "--outage", outages, "--quiet", "--out", dir.file("r_gst")});
-  const auto s = replay({"replay", "--in", without_gst(drive, dir.file("nogst")), "--outage", outages, "--quiet",
+  const auto full = replay_summary({"replay", "--in", drive, "--outage", outages, "--quiet", "--out", dir.file("r_gst")});
+  const auto s = replay_summary({"replay", "--in", without_gst(drive, dir.file("nogst")), "--outage", outages, "--quiet",
                          "--out", dir.file("r")});
   EXPECT_EQ(s["health"]["status"], "ok") << s["health"].dump();
   // GGA quality 4 (RTK fixed) and no HDOP: a 5-m sigma before (drift RMS

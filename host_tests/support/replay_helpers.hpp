@@ -41,15 +41,19 @@ inline nlohmann::json replay_summary(const std::vector<std::string>& args) {
   return read_json(*(out + 1) + "/summary.json");
 }
 
-/// The ten 15-s outages on drive_0708, every 45 s from 60 s after the
-/// car first passes 3 m/s (t = 243300.75 s, test_real_logs.cpp).
-inline std::string drive_0708_outages() {
+/// The outage schedule as `--outage` takes it: ten 15-s outages, one
+/// every 45 s from `first_start_s`.
+inline std::string outage_schedule(double first_start_s) {
   std::string outages;
   for (int i = 0; i < 10; ++i) {
     if (i > 0) outages += ',';
-    outages += std::to_string(243360.75 + 45.0 * i) + ":15";
+    outages += std::to_string(first_start_s + 45.0 * i) + ":15";
   }
   return outages;
 }
+
+/// The schedule on drive_0708: from 60 s after the car first passes 3 m/s
+/// (t = 243300.75 s, test_real_logs.cpp).
+inline std::string drive_0708_outages() { return outage_schedule(243360.75); }
 
 }  // namespace sinu::test
