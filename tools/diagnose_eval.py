@@ -34,7 +34,8 @@ import subprocess
 import sys
 
 EFFECTS = ["accel_scale", "gyro_scale", "accel_misalign", "gyro_misalign", "lever_arm", "gps_latency",
-           "accel_temp_bias", "gyro_temp_bias", "mag_hard_iron", "mag_soft_iron", "gyro_g_sensitivity"]
+           "accel_temp_bias", "gyro_temp_bias", "mag_hard_iron", "mag_soft_iron", "gyro_g_sensitivity",
+           "mag_misalign"]
 # In the default model (the latency) or always carried with a magnetometer (the hard
 # iron): the right answer is "nothing missing", the baseline estimates them.
 CARRIED = {"mag_hard_iron", "gps_latency"}

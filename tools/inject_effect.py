@@ -10,7 +10,7 @@ effects.json is the simulator's effects object (docs: firmware/host/sim/effects.
 recorded measurements as the simulator applies it to the true ones:
   accel: a' = (I + diag(s)) (I + M) a + k (T - 25 degC)
   gyro:  w' = (I + diag(s)) (I + M) w + G a + k (T - 25 degC)
-  mag:   m' = S m + b          (S the soft iron, b the hard iron)
+  mag:   m' = S R m + b        (S the soft iron, R = exp(-[theta x]) the misalignment, b the hard iron)
   lever_arm l:    every fix moves to the antenna: p + C_nb l, v + C_nb (w x l)
   gps_latency dt: every sentence arrives dt later (its UTC still the fix's instant,
                   as the dataset contract says; a real receiver's latency)
@@ -47,6 +47,16 @@ def matrix(v):
     return np.array(v, dtype=float).reshape(3, 3)
 
 
+def mag_axes(theta):
+    """The magnetometer's axes turned by theta [rad]: exp(-[theta x]) (Rodrigues)."""
+    angle = np.linalg.norm(theta)
+    if angle == 0.0:
+        return np.eye(3)
+    k = theta / angle
+    K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) - math.sin(angle) * K + (1 - math.cos(angle)) * K @ K
+
+
 def imu_transform(fx):
     """The effects on (a, w, m, temp) -> (a', w', m')."""
     eye = np.eye(3)
@@ -57,7 +67,7 @@ def imu_transform(fx):
     g_sens = matrix(fx.get("gyro_g_sensitivity", np.zeros((3, 3))))
     acc_k = np.array(fx.get("accel_temp_bias", [0, 0, 0]), dtype=float)
     gyr_k = np.array(fx.get("gyro_temp_bias", [0, 0, 0]), dtype=float)
-    soft = matrix(fx.get("mag_soft_iron", np.eye(3)))
+    soft = matrix(fx.get("mag_soft_iron", np.eye(3))) @ mag_axes(np.array(fx.get("mag_misalign", [0, 0, 0]), float))
     hard = np.array(fx.get("mag_hard_iron", [0, 0, 0]), dtype=float)
     needs_temp = bool(acc_k.any() or gyr_k.any())
 
@@ -277,7 +287,7 @@ def main():
         raise SystemExit(f"inject_effect: {a.effects}: expected a JSON object of effects")
     fx = fx.get("effects", fx)
     known = {"accel_scale", "gyro_scale", "accel_misalign", "gyro_misalign", "gyro_g_sensitivity", "accel_temp_bias",
-             "gyro_temp_bias", "mag_soft_iron", "mag_hard_iron", "lever_arm", "gps_latency"}
+             "gyro_temp_bias", "mag_soft_iron", "mag_hard_iron", "mag_misalign", "lever_arm", "gps_latency"}
     unknown = set(fx) - known
     if unknown:
         raise SystemExit(f"inject_effect: {a.effects}: unknown effect(s) {', '.join(sorted(unknown))}")

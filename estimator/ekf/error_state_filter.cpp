@@ -110,7 +110,7 @@ void ErrorStateFilter::init(const StateLayout& layout, const SensorNoise& noise,
 
 void ErrorStateFilter::reanchor_hard_iron(const NavState& nav, const Eigen::Vector3d& mag_b_uT, double sigma_uT) {
   if (!layout_.has(Effect::MagHardIron)) return;
-  const Eigen::Vector3d predicted = mag_soft_iron() * (nav.C_nb().transpose() * mag_earth_field_n_uT());
+  const Eigen::Vector3d predicted = mag_axes() * (nav.C_nb().transpose() * mag_earth_field_n_uT());
   const Eigen::Vector3d h = mag_b_uT - predicted;
   for (Eigen::Index i = 0; i < 3; ++i) set_effect(Effect::MagHardIron, i, h(i));
   const Slice& H = layout_.of(Effect::MagHardIron);
@@ -246,7 +246,7 @@ void ErrorStateFilter::predict(const PredictInput& in) {
 
 void ErrorStateFilter::start_mag_field(const NavState& nav, const Eigen::Vector3d& mag_b_uT, double noise_sigma_uT) {
   const Eigen::Matrix3d C = nav.C_nb();
-  const Eigen::Vector3d F_n = C * mag_soft_iron().inverse() * (mag_b_uT - mag_hard_iron_b_uT());
+  const Eigen::Vector3d F_n = C * mag_axes().inverse() * (mag_b_uT - mag_hard_iron_b_uT());
   for (Eigen::Index i = 0; i < 3; ++i) set_effect(Effect::MagEarthField, i, F_n(i));
   if (!layout_.has(Effect::MagEarthField)) return;
   // F = C (m - h - n) and F_hat = C_hat (m - h_hat), C_hat = (I - [phi x]) C, so with

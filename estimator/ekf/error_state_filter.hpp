@@ -9,6 +9,7 @@
 #include "estimator/ekf/state_layout.hpp"
 #include "estimator/ins/imu_sample.hpp"
 #include "estimator/ins/nav_state.hpp"
+#include "estimator/ins/rotation.hpp"
 #include "estimator/ins/strapdown.hpp"
 
 namespace sinu::est {
@@ -86,6 +87,12 @@ class ErrorStateFilter {
   Eigen::Vector3d mag_hard_iron_b_uT() const { return view(Effect::MagHardIron).vec3(); }
   /// Soft-iron matrix I + D (identity without the mag_soft_iron states).
   Eigen::Matrix3d mag_soft_iron() const { return view(Effect::MagSoftIron).identity_plus_symmetric(); }
+  /// The magnetometer's axes against the body, I - [theta x] (identity without mag_misalign).
+  Eigen::Matrix3d mag_misalignment() const {
+    return Eigen::Matrix3d::Identity() - skew(view(Effect::MagMisalign).vec3());
+  }
+  /// The Earth field in the body -> the magnetometer's reading before the hard iron: S (I - [theta x]).
+  Eigen::Matrix3d mag_axes() const { return mag_soft_iron() * mag_misalignment(); }
   const EffectTuning& tuning() const { return tuning_; }
   const SensorNoise& noise() const { return noise_; }
 

@@ -21,7 +21,7 @@ constexpr double kNever = -1e300;
 /// (deferred) when it is to be used, dropped when not.
 StateLayout layout_of(const NavigatorConfig& cfg) {
   EffectSet effects = cfg.effects, deferred;
-  const Effect mag[] = {Effect::MagEarthField, Effect::MagHardIron, Effect::MagSoftIron};
+  const Effect mag[] = {Effect::MagEarthField, Effect::MagHardIron, Effect::MagSoftIron, Effect::MagMisalign};
   if (cfg.use_mag) {
     effects.add(Effect::MagEarthField);  // the 3-axis model needs both (PX4 EKF2 likewise)
     effects.add(Effect::MagHardIron);

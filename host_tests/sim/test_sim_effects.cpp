@@ -141,6 +141,22 @@ TEST_F(Effects, MagneticHardAndSoftIron) {
   });
 }
 
+// A magnetometer turned by theta against the IMU reads the same field in
+// axes turned by theta: the same strength, a direction |theta| away, and
+// exp(-[theta x]) is the map (independent of the simulator's Eigen path:
+// Rodrigues written out here).
+TEST_F(Effects, MagneticMisalignmentTurnsTheField) {
+  const Eigen::Vector3d theta(0.03, -0.02, 0.04);  // rad
+  const double angle = theta.norm();
+  const Eigen::Vector3d k = theta / angle;
+  Eigen::Matrix3d K;
+  K << 0.0, -k.z(), k.y(), k.z(), 0.0, -k.x(), -k.y(), k.x(), 0.0;
+  const Eigen::Matrix3d R = Eigen::Matrix3d::Identity() - std::sin(angle) * K + (1.0 - std::cos(angle)) * K * K;
+  compare_imu({.mag_misalign_rad = theta}, [&](const dataset::CsvRow& b, const dataset::CsvRow& e) {
+    expect_map(triple(e, ic::mx), R, triple(b, ic::mx));
+  });
+}
+
 TEST_F(Effects, GyroGSensitivityAddsRatePerSpecificForce) {
   Eigen::Matrix3d G;
   G << 2e-4, 5e-5, -4e-5, -6e-5, 2.5e-4, 3e-5, 4e-5, -5e-5, -1.8e-4;

@@ -21,6 +21,7 @@
 #include "estimator/ekf/effects/lever_arm.hpp"
 #include "estimator/ekf/effects/mag_earth_field.hpp"
 #include "estimator/ekf/effects/mag_hard_iron.hpp"
+#include "estimator/ekf/effects/mag_misalign.hpp"
 #include "estimator/ekf/effects/mag_soft_iron.hpp"
 
 namespace sinu::est {
@@ -36,7 +37,7 @@ using AllEffects = EffectList<effects::AccelScale, effects::GyroScale, effects::
                               effects::AccelTempBias, effects::GyroTempBias, effects::AccelBias, effects::GyroBias,
                               effects::GpsPositionBias, effects::MagEarthField, effects::MagHardIron,
                               effects::MagSoftIron, effects::AccelMisalign, effects::GyroMisalign,
-                              effects::GyroGSensitivity>;
+                              effects::GyroGSensitivity, effects::MagMisalign>;
 static_assert(AllEffects::size == kEffectCount, "every Effect has its file in AllEffects");
 
 /// Calls f.template operator()<E>() for every registered effect, in enum order.

@@ -13,9 +13,9 @@ namespace sinu::est {
 /// Every effect, in the order of effect_list.hpp (a static_assert checks it).
 enum class Effect : std::uint8_t {
   AccelScale, GyroScale, LeverArm, GpsLatency, AccelTempBias, GyroTempBias, AccelBias, GyroBias,
-  GpsPositionBias, MagEarthField, MagHardIron, MagSoftIron, AccelMisalign, GyroMisalign, GyroGSensitivity
+  GpsPositionBias, MagEarthField, MagHardIron, MagSoftIron, AccelMisalign, GyroMisalign, GyroGSensitivity, MagMisalign
 };
-inline constexpr std::size_t kEffectCount = 15;
+inline constexpr std::size_t kEffectCount = 16;
 
 /// How an effect's states are indexed.
 enum class Components : std::uint8_t {
@@ -74,6 +74,7 @@ struct EffectSpec {
   Triad triad = Triad::None;        // the sensor triad whose axis i owns component i (or row i)
   Triad excited_by = Triad::None;   // the input that reveals it: component k (column k of a 3x3) by that axis
   Needs needs = Needs::Nothing;
+  const char* revealed_by = nullptr;  // what reveals it where no single sensor axis does (diagnose's advice)
 };
 
 inline constexpr double kRadToDeg = 57.29577951308232;

@@ -13,9 +13,9 @@ struct MagEarthField {
   // ~0.1 uT over 100 km
   static constexpr EffectSpec spec{Effect::MagEarthField, "mag_earth_field", Components::Xyz, "uT", 1.0, 5.0, 1e-3,
                                    false, 100.0};
-  /// y = -S C_bn e - dh: with the invariant error the attitude drops out.
+  /// y = -A C_bn e - dh (A = S (I - [theta x])): with the invariant error the attitude drops out.
   template <class T> static void magnetometer(EffectView, T& t) {
-    if (t.slice.active()) t.H.block(0, t.slice.start, 3, 3) = -t.S * t.C_bn;
+    if (t.slice.active()) t.H.block(0, t.slice.start, 3, 3) = -t.A * t.C_bn;
   }
   /// e moves with phi: e_k+1 = e_k + [F x] (phi_k+1 - phi_k), after every
   /// other term of the attitude rows is in.

@@ -172,10 +172,8 @@ void observability_notes(const CandidateResult& c, const replay::Excitation& x, 
       const double span = std::max(std::abs(x.w_min_rad_s(driver)), std::abs(x.w_max_rad_s(driver))) * est::kRadToDeg;
       note += fmt::format("; rate {} never exceeded {:.0f} deg/s: faster turns or rolls about that axis reveal it",
                           kAxis[driver], span);
-    } else if (c.effect == est::Effect::LeverArm) {
-      note += ": turns (the arm's velocity w x l) and a level attitude change reveal it";
-    } else if (c.effect == est::Effect::MagSoftIron) {
-      note += ": a full turn in heading (and some bank) reveals it";
+    } else if (spec.revealed_by != nullptr) {
+      note += fmt::format("; revealed by {}", spec.revealed_by);
     }
     out.push_back(note);
   }

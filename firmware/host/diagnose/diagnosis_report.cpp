@@ -128,8 +128,9 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
   md << "## Conclusion\n\n```\n" << diagnosis_summary(o, d) << "```\n";
   if (!d.model_changed()) {
     md << "\nNo effect the EKF can estimate explains the misfit. What the vocabulary does not cover: a\n"
-          "magnetometer misfit that changes with heading beyond soft iron (a field that moves with the motors),\n"
-          "vibration rectification, a receiver whose error changes with the satellites in view.\n";
+          "magnetometer misfit beyond soft iron and a misalignment (a field that moves with the motors, a\n"
+          "magnetometer sampled late), vibration rectification, a receiver whose error changes with the\n"
+          "satellites in view.\n";
   }
   if (!d.rounds.empty()) {
     auto whiteness = [](const Round& r) {

@@ -12,7 +12,8 @@
 //   accel_temp_bias [m/s^2/degC x3]              bias += k (T - 25 degC)
 //   gyro_temp_bias [rad/s/degC x3]               bias += k (T - 25 degC)
 //   mag_hard_iron [uT x3]                        m += b
-//   mag_soft_iron [3x3]                          m = S m_earth_b (+ hard iron); nominal S = I
+//   mag_soft_iron [3x3]                          m = S R m_earth_b (+ hard iron); nominal S = I
+//   mag_misalign [rad x3]                        R = exp(-[theta x]): the magnetometer's axes turned by theta
 //   gyro_g_sensitivity [rad/s per m/s^2, 3x3]    gyro += G f_b (true specific force)
 // JSON: {"lever_arm": [0.6, -0.2, -0.4], "gps_latency": 0.15,
 //        "gyro_g_sensitivity": [[..],[..],[..]], ...}; 3x3 values are arrays of rows.
@@ -39,6 +40,7 @@ struct Effects {
   std::optional<Eigen::Vector3d> accel_temp_bias_m_s2_per_degC{}, gyro_temp_bias_rad_s_per_degC{};
   std::optional<Eigen::Vector3d> mag_hard_iron_uT{};
   std::optional<Eigen::Matrix3d> mag_soft_iron{};
+  std::optional<Eigen::Vector3d> mag_misalign_rad{};
   std::optional<Eigen::Matrix3d> gyro_g_sensitivity_rad_s_per_m_s2{};
 
   std::size_t count() const;

@@ -9,8 +9,10 @@ namespace {
 /// What an effect's magnetometer() hook sees and writes (effects/*.hpp).
 struct MagnetometerTerms {
   const Eigen::Matrix3d& C_bn;
-  const Eigen::Matrix3d& S;  // soft iron I + D
-  const Eigen::Vector3d& u;  // the Earth field in the body frame, C_bn F
+  const Eigen::Matrix3d& A;    // body field -> reading: S (I - [theta x]) (mag_axes)
+  const Eigen::Matrix3d& S;    // soft iron I + D
+  const Eigen::Vector3d& u_b;  // the Earth field in the body frame, C_bn F
+  const Eigen::Vector3d& u;    // the same in the magnetometer's axes, (I - [theta x]) u_b
   MeasJacobian& H;
   Slice slice;
 };
@@ -22,12 +24,14 @@ Measurement magnetometer_measurement(const ErrorStateFilter& filter, const NavSt
   const StateLayout& L = filter.layout();
   const Eigen::Matrix3d C_bn = nav.C_nb().transpose();
   const Eigen::Matrix3d S = filter.mag_soft_iron();
-  const Eigen::Vector3d u = C_bn * filter.mag_earth_field_n_uT();
+  const Eigen::Matrix3d A = filter.mag_axes();
+  const Eigen::Vector3d u_b = C_bn * filter.mag_earth_field_n_uT();
+  const Eigen::Vector3d u = filter.mag_misalignment() * u_b;
   Measurement m;
   m.gate_sigma = gate_sigma;
   m.innovation = S * u + filter.mag_hard_iron_b_uT() - mag_b_uT;
   m.H = MeasJacobian::Zero(3, L.dim);
-  MagnetometerTerms t{C_bn, S, u, m.H, {}};
+  MagnetometerTerms t{C_bn, A, S, u_b, u, m.H, {}};
   for_each_effect([&]<class E>() {
     if constexpr (requires { E::magnetometer(filter.view(E::spec.effect), t); }) {
       t.slice = L.of(E::spec.effect);

@@ -1,9 +1,11 @@
 #pragma once
 // Magnetometer aiding, three axes (PX4 EKF2's "3-axis" fusion): the body
 // field is the Earth field (a NED state) rotated into the body, through the
-// soft iron S = I + D (optional states), plus the hard iron (a body state):
-//   m_b = S C_bn F_n + h_b + noise  [uT]   (below: S = I; with D, H_att and
-//   H_field are premultiplied by S and H_D = -d(S u)/dD, u = C_bn F).
+// magnetometer's axes (I - [theta x], optional states) and the soft iron
+// S = I + D (optional states), plus the hard iron (a body state):
+//   m_b = S (I - [theta x]) C_bn F_n + h_b + noise  [uT]   (below: S = I,
+//   theta = 0; with them H_field is premultiplied by A = S (I - [theta x]),
+//   and each effect file gives its own rows: effects/mag_*.hpp).
 // y = h(x_hat) - z. With phi (C_nb_hat = (I - [phi x]) C_nb), dF = F - F_hat,
 // dh = h - h_hat:  y = -C_bn [F x] phi - C_bn dF - dh = -C_bn e - dh with the
 // invariant field error e = dF + [F x] phi (state_layout.hpp), so

@@ -17,6 +17,7 @@
 #include "firmware/host/sim/effects/gyro_temp_bias.hpp"
 #include "firmware/host/sim/effects/lever_arm.hpp"
 #include "firmware/host/sim/effects/mag_hard_iron.hpp"
+#include "firmware/host/sim/effects/mag_misalign.hpp"
 #include "firmware/host/sim/effects/mag_soft_iron.hpp"
 
 namespace sinu::sim {
@@ -33,7 +34,8 @@ struct SimEffectList {
 using AllSimEffects =
     SimEffectList<effects::AccelScale, effects::GyroScale, effects::AccelMisalign, effects::GyroMisalign,
                   effects::LeverArm, effects::GpsLatency, effects::AccelTempBias, effects::GyroTempBias,
-                  effects::MagHardIron, effects::MagSoftIron, effects::GyroGSensitivity>;
+                  effects::MagHardIron, effects::MagSoftIron, effects::GyroGSensitivity,
+                  effects::MagMisalign>;
 
 inline constexpr std::array<std::string_view, AllSimEffects::size> kEffectNames = AllSimEffects::names;
 

@@ -16,7 +16,8 @@ struct SensorEffects {
   Eigen::Vector3d accel_scale = Eigen::Vector3d::Zero(), gyro_scale = Eigen::Vector3d::Zero();  // measured = (1 + s) ...
   Eigen::Matrix3d accel_misalign = Eigen::Matrix3d::Zero(), gyro_misalign = Eigen::Matrix3d::Zero();  // ... (I + M) true
   Eigen::Matrix3d gyro_g_sensitivity = Eigen::Matrix3d::Zero();  // gyro += G f_b
-  Eigen::Matrix3d mag_soft_iron = Eigen::Matrix3d::Identity();   // m = S m_earth_b + h
+  Eigen::Matrix3d mag_soft_iron = Eigen::Matrix3d::Identity();   // m = S R m_earth_b + h
+  Eigen::Matrix3d mag_axes = Eigen::Matrix3d::Identity();        // R: body -> the magnetometer's axes
   Eigen::Vector3d mag_hard_iron_uT = Eigen::Vector3d::Zero();
   Eigen::Vector3d accel_temp_per_degC = Eigen::Vector3d::Zero(), gyro_temp_per_degC = Eigen::Vector3d::Zero();
   Eigen::Vector3d lever_arm_b_m = Eigen::Vector3d::Zero();       // antenna = IMU + C_nb l
