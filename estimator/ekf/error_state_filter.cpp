@@ -389,6 +389,12 @@ void ErrorStateFilter::reset_block(const Slice& block, const Eigen::Vector3d& si
   for (Eigen::Index i = 0; i < 3; ++i) P_(block.start + i, block.start + i) = sigma(i) * sigma(i);
 }
 
+void ErrorStateFilter::reset_state(Eigen::Index i, double sigma) {
+  P_.row(i).setZero();
+  P_.col(i).setZero();
+  P_(i, i) = sigma * sigma;
+}
+
 void ErrorStateFilter::reset_yaw(NavState& nav, double dyaw_rad, double sigma_rad) {
   const Eigen::Quaterniond turn(Eigen::AngleAxisd(dyaw_rad, Eigen::Vector3d::UnitZ()));
   nav.q_nb = (turn * nav.q_nb).normalized();

@@ -118,6 +118,8 @@ class ErrorStateFilter {
   void add_block_noise(const Slice& block, const Eigen::Matrix3d& Q);
   /// Resets a 3-state block: no correlation with anything, variances sigma^2.
   void reset_block(const Slice& block, const Eigen::Vector3d& sigma);
+  /// Resets state i alike: no correlation with anything, variance sigma^2.
+  void reset_state(Eigen::Index i, double sigma);
   /// Turns the solution about down by dyaw [rad] (a yaw reset): the attitude
   /// down error becomes uncorrelated with variance sigma^2, the Earth-field
   /// estimate turns with the body so the magnetometer stays consistent.

@@ -60,6 +60,7 @@ struct NavCounters {
   double imu_longest_gap_s = 0.0;
   std::uint64_t imu_clipped_samples = 0;  // raw samples with an axis at full scale
   std::uint64_t position_resets = 0, velocity_resets = 0, yaw_resets = 0;
+  std::uint64_t vertical_resets = 0;     // of velocity_resets: vd to the GNSS heights' rate (vertical_check.hpp)
   std::uint64_t mag_reanchors = 0;       // hard iron re-anchored after a disturbance
   std::uint64_t position_inflations = 0;  // position widened by a small misfit, the epoch fused again
   std::uint64_t gnss_timeouts = 0;       // times the GNSS position stopped for gnss_timeout_s

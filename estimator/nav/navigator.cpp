@@ -45,6 +45,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   alignment_.configure(cfg.alignment);
   alignment_result_ = {};
   recovery_.configure(cfg.recovery);
+  vertical_.configure(cfg.vertical);
   vel_noise_started_ = false;
   stillness_.configure(cfg.stillness);
   vehicle_.configure(cfg.vehicle_detector);
@@ -267,6 +268,7 @@ void Navigator::align(const ImuSample& s, double dt) {
     filter_.set_gps_bias_sigma(z.sigma_ned_m, 0.0);
     filter_.seed_position_from_fix(z.sigma_ned_m);
     recovery_.restart(s.t_s);
+    vertical_.restart();
     last_gnss_pos_t_s_ = s.t_s;
     events_ |= nav_flag::kAlignedNow;
     return;
@@ -350,6 +352,7 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
       }
       if (z.sigma_is_guess) learn_position_scale(t_meas);
       recover(recovery_.on_position(t_meas, ok, innovation_h, z.sigma_ned_m.head<2>().norm()), z, dt_back, t_meas);
+      check_vertical(z, t_meas);
     }
     if (z.has_velocity) last_gnss_speed_m_s_ = z.v_ne_m_s.norm();
     if (z.has_velocity && cfg_.fuse_velocity) {
@@ -381,8 +384,29 @@ void Navigator::learn_position_scale(double t_meas) {
   last_pos_scale_t_s_ = t_meas;
 }
 
+void Navigator::check_vertical(const GnssObservation& z, double t_meas) {
+  const StateLayout& L = filter_.layout();
+  const Eigen::Index vd = L.vel.start + 2;
+  VerticalRate rate;
+  if (!vertical_.push(t_meas, z.h_m, nav_.v_n_m_s.z(), std::sqrt(filter_.P()(vd, vd)), rate)) return;
+  predict_.flush(filter_);
+  if (counters_.resets() == 0) counters_.first_reset_t_s = t_meas;
+  nav_.v_n_m_s.z() = rate.vd_m_s;
+  filter_.reset_state(vd, std::hypot(rate.sigma_m_s, cfg_.vertical_reset_sigma_m_s));
+  if (L.has(Effect::AccelBias)) {
+    // The bias along gravity has shifted: let it move (PX4 EKF2's bad_acc_vertical).
+    const Eigen::Vector3d down_b = nav_.C_nb().row(2).transpose();
+    const double s = cfg_.vertical_bias_widen_m_s2;
+    filter_.add_block_noise(L.of(Effect::AccelBias), s * s * down_b * down_b.transpose());
+  }
+  ++counters_.velocity_resets;
+  ++counters_.vertical_resets;
+  events_ |= nav_flag::kVelocityReset;
+}
+
 void Navigator::recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas) {
   if (action == RecoveryAction::None) return;
+  vertical_.restart();
   predict_.flush(filter_);
   if (counters_.resets() == 0) counters_.first_reset_t_s = t_meas;
   const StateLayout& L = filter_.layout();

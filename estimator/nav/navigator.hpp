@@ -32,6 +32,7 @@
 #include "estimator/nav/noise_adapter.hpp"
 #include "estimator/nav/stillness.hpp"
 #include "estimator/nav/vehicle_detector.hpp"
+#include "estimator/nav/vertical_check.hpp"
 #include "estimator/prefilter/imu_prefilter.hpp"
 #include "estimator/util/ring_buffer.hpp"
 
@@ -52,6 +53,12 @@ struct NavigatorConfig {
   NavUncertainty initial;
   AlignmentConfig alignment;
   RecoveryConfig recovery;
+  // The INS's vd against the GNSS heights' rate (vertical_check.hpp): when it
+  // has run away, vd is reset to the rate (its sigma and vertical_reset_sigma_m_s)
+  // and the accelerometer bias along gravity widened by vertical_bias_widen_m_s2.
+  VerticalCheckConfig vertical;
+  double vertical_reset_sigma_m_s = 0.5;
+  double vertical_bias_widen_m_s2 = 0.5;
   ImuScreenConfig screen;            // full scales: clipping
   // The delayed horizon: at least this, and it grows with the latency
   // estimate (latency + horizon_margin_s, up to max_horizon_s and what the IMU
@@ -213,6 +220,8 @@ class Navigator {
   /// The largest latency the longest horizon can serve (two IMU periods of margin).
   double max_gps_latency_s() const { return std::max(0.0, horizon_limit_s() - 2.0 * period_s_ - 0.01); }
   void recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas);
+  /// The fix's height to the vertical check; resets vd when it has run away.
+  void check_vertical(const GnssObservation& z, double t_meas);
   void learn_position_scale(double t_meas);
   void update_health(double t_now, double dt);
   void emit();
@@ -228,6 +237,7 @@ class Navigator {
   AlignmentResult alignment_result_;
   ErrorStateFilter filter_;
   GnssRecovery recovery_;
+  VerticalCheck vertical_;
   NavState nav_;
   ImuSample prev_;
   bool have_prev_ = false;

@@ -48,9 +48,10 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
                   num(c.first_lost_t_s).c_str(), num(c.resets()).c_str());
       break;
     case replay::HealthStatus::Reset:
-      std::printf("  solution RESET to GNSS %s time(s) (first at t=%s; position %s, velocity %s, yaw %s)\n",
+      std::printf("  solution RESET to GNSS %s time(s) (first at t=%s; position %s, velocity %s of which vertical %s, "
+                  "yaw %s)\n",
                   num(c.resets()).c_str(), num(c.first_reset_t_s).c_str(), num(c.position_resets).c_str(),
-                  num(c.velocity_resets).c_str(), num(c.yaw_resets).c_str());
+                  num(c.velocity_resets).c_str(), num(c.vertical_resets).c_str(), num(c.yaw_resets).c_str());
       break;
     case replay::HealthStatus::NotAligned:
       if (r.gnss.used == 0)

@@ -126,8 +126,17 @@ struct ImuNonFinite {
   double start_s = 0.0, duration_s = 0.0;
 };
 
+/// From `start_s` on, `delta` added to imu.csv column `column` (1..6: ax..gz):
+/// a bias that shifts in flight (a knock, a clipping burst, vibration that
+/// changes with the throttle), beyond what the calibrated model allows.
+struct ImuBiasShift {
+  double start_s = 0.0;
+  std::size_t column = 3;  // az
+  double delta = 0.0;      // m/s^2 or rad/s
+};
+
 using Fault = std::variant<GnssPositionJump, GnssGarbage, GnssOutage, ImuClip, ImuGap, ImuDropMagFirstRows,
-                           DropLeadingSeconds, ImuTimeGlitch, ImuNonFinite>;
+                           DropLeadingSeconds, ImuTimeGlitch, ImuNonFinite, ImuBiasShift>;
 
 /// What one fault did: lines (rows) it rewrote and lines it removed, over all files.
 struct FaultEffect {

@@ -21,7 +21,7 @@ std::vector<std::string> cells(const std::string& line) {
 }  // namespace
 
 ErrorSeries error_series(const std::string& nav_csv, const std::string& truth_csv) {
-  std::vector<double> tt, lat, lon, yaw;
+  std::vector<double> tt, lat, lon, yaw, vd;
   {
     std::ifstream in(truth_csv);
     std::string line;
@@ -33,6 +33,7 @@ ErrorSeries error_series(const std::string& nav_csv, const std::string& truth_cs
       lat.push_back(std::stod(c[1]));
       lon.push_back(std::stod(c[2]));
       yaw.push_back(c.size() > 9 && !c[9].empty() ? std::stod(c[9]) : NAN);
+      vd.push_back(c.size() > 6 && !c[6].empty() ? std::stod(c[6]) : NAN);
     }
   }
   ErrorSeries s;
@@ -43,7 +44,7 @@ ErrorSeries error_series(const std::string& nav_csv, const std::string& truth_cs
   const auto column = [&](const char* name) {
     return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
   };
-  const std::size_t flags_col = column("flags"), yaw_col = column("yaw");
+  const std::size_t flags_col = column("flags"), yaw_col = column("yaw"), vd_col = column("vd");
   std::size_t k = 0;
   while (std::getline(in, line)) {
     const auto c = cells(line);
@@ -60,6 +61,7 @@ ErrorSeries error_series(const std::string& nav_csv, const std::string& truth_cs
     // The nearer truth row's yaw (angles do not interpolate across +-180).
     const double yaw_true = a < 0.5 ? yaw[k] : yaw[k + 1];
     s.err_yaw_deg.push_back(std::remainder(std::stod(c[yaw_col]) - yaw_true, 360.0));
+    s.err_vd_m_s.push_back(std::stod(c[vd_col]) - (vd[k] + a * (vd[k + 1] - vd[k])));
   }
   return s;
 }

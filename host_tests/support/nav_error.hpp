@@ -10,7 +10,7 @@
 namespace sinu::test {
 
 struct ErrorSeries {
-  std::vector<double> t, err_h, err_yaw_deg;
+  std::vector<double> t, err_h, err_yaw_deg, err_vd_m_s;  // err_vd: NaN where truth has no vd
   std::vector<std::uint32_t> flags;
 };
 

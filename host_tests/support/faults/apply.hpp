@@ -25,6 +25,7 @@ FaultEffect apply(const ImuDropMagFirstRows& f, DatasetText& d);
 FaultEffect apply(const DropLeadingSeconds& f, DatasetText& d);
 FaultEffect apply(const ImuTimeGlitch& f, DatasetText& d);
 FaultEffect apply(const ImuNonFinite& f, DatasetText& d);
+FaultEffect apply(const ImuBiasShift& f, DatasetText& d);
 
 /// Removes the lines whose time (leading number) satisfies `drop`; lines
 /// without a readable time stay. A file that did not end in a terminator

@@ -1,9 +1,10 @@
-// The imu.csv faults: clipping, gap, missing magnetometer; and the reboot
+// The imu.csv faults: clipping, gap, missing magnetometer, a bias shift; and the reboot
 // (DropLeadingSeconds), which cuts every file at the same instant.
 #include "host_tests/support/faults/apply.hpp"
 #include "host_tests/support/faults/imu_clip.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 
 namespace sinu::test::faults {
 
@@ -73,6 +74,22 @@ FaultEffect apply(const ImuNonFinite& f, DatasetText& d) {
     if (fields.size() < 5) continue;
     fields[1] = "nan";  // ax
     fields[4] = "nan";  // gx
+    d.imu[i].text = join_fields(fields);
+    ++e.changed;
+  }
+  return e;
+}
+
+FaultEffect apply(const ImuBiasShift& f, DatasetText& d) {
+  FaultEffect e;
+  for (std::size_t i = 1; i < d.imu.size(); ++i) {
+    const auto t = leading_number(d.imu[i].text);
+    if (!t || *t < f.start_s) continue;
+    auto fields = split_fields(d.imu[i].text);
+    if (fields.size() <= f.column || fields[f.column].empty()) continue;  // no sample: stays empty
+    char text[64];
+    std::snprintf(text, sizeof text, "%.9g", std::strtod(fields[f.column].c_str(), nullptr) + f.delta);
+    fields[f.column] = text;
     d.imu[i].text = join_fields(fields);
     ++e.changed;
   }
