@@ -452,6 +452,16 @@ void Navigator::fuse_magnetometer(const ImuSample& s) {
   if (!mag_started_) {  // the first field sample switches the reserved states on
     predict_.flush(filter_);
     filter_.activate_deferred();
+    const bool hard_iron_given = filter_.tuning().prior[static_cast<std::size_t>(Effect::MagHardIron)].given;
+    if (alignment_result_.model_field_n_uT.allFinite() && !hard_iron_given) {
+      // The hard iron from the data: what the reading holds beyond the model's
+      // field seen with the aligned attitude (its prior sigma stays: the
+      // model may be wrong here). The field state then starts at the model's,
+      // where the strength and inclination priors below are linear enough.
+      const Eigen::Vector3d h = s.mag_b_uT - filter_.mag_axes() * (nav_.C_nb().transpose() *
+                                                                  alignment_result_.model_field_n_uT);
+      for (Eigen::Index i = 0; i < 3; ++i) filter_.set_effect(Effect::MagHardIron, i, h(i));
+    }
     filter_.start_mag_field(nav_, s.mag_b_uT, mag_noise_.sigma());
     // Priors on the field state, fused once: the declination the heading was
     // aligned with (given, or the model's for a field it recognised) is known
