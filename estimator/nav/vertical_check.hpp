@@ -14,8 +14,9 @@
 // rate against the mean of the INS's vd at the same fixes. It fires when they
 // disagree by more than `min_disagreement_m_s` and `sigmas` times the
 // combined sigma for `persist_s`, and only when the heights lie on a line (the
-// fit's residual within `line_residual_factor` of the fix-to-fix scatter): a
-// receiver's height step is no rate.
+// fit's residual RMS within `line_residual_factor` and its largest within
+// `line_max_residual_factor` of the fix-to-fix scatter): a receiver's height
+// step is no rate.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -24,13 +25,14 @@
 namespace sinu::est {
 
 struct VerticalCheckConfig {
-  double window_s = 5.0;
-  std::size_t min_fixes = 10;
+  double window_s = 8.0;
+  std::size_t min_fixes = 6;  // a 1-Hz receiver too
   double min_span_s = 2.0;
   double min_disagreement_m_s = 1.0;
   double sigmas = 5.0;
   double persist_s = 2.0;
   double line_residual_factor = 2.5;
+  double line_max_residual_factor = 4.0;
   double scatter_floor_m = 0.05;  // heights printed to 1 cm, a receiver's smoothing
 };
 
@@ -57,7 +59,7 @@ class VerticalCheck {
   bool push(double t_s, double h_m, double vd_ins_m_s, double sigma_vd_m_s, VerticalRate& out);
 
  private:
-  static constexpr std::size_t kMax = 64;  // 5 s of 10-Hz fixes, with room
+  static constexpr std::size_t kMax = 96;  // 8 s of 10-Hz fixes, with room
   static constexpr double kNever = -1e300;
   struct Fix {
     double t_s, h_m, vd_ins_m_s;
@@ -102,11 +104,12 @@ inline bool VerticalCheck::push(double t_s, double h_m, double vd_ins_m_s, doubl
     sth += dt * (fix_[k].h_m - h_mean);
   }
   const double rate_up = sth / stt;
-  double residual2 = 0.0;
+  double residual2 = 0.0, residual_max = 0.0;
   std::array<double, kMax> step{};  // fix-to-fix scatter about the line: a height step moves one of them
   for (std::size_t k = 0; k < n_; ++k) {
     const double r = fix_[k].h_m - h_mean - rate_up * (fix_[k].t_s - t_mean);
     residual2 += r * r;
+    residual_max = std::max(residual_max, std::abs(r));
     if (k > 0) step[k - 1] = std::abs(r - (fix_[k - 1].h_m - h_mean - rate_up * (fix_[k - 1].t_s - t_mean)));
   }
   const std::size_t m = n_ - 1;
@@ -115,7 +118,10 @@ inline bool VerticalCheck::push(double t_s, double h_m, double vd_ins_m_s, doubl
   // A white height error sigma gives fix-to-fix differences of median 0.954 sigma.
   const double scatter_m = std::max(cfg_.scatter_floor_m, step[m / 2] / 0.954);
   const double residual_m = std::sqrt(residual2 / std::max(1.0, n - 2.0));
-  const bool on_a_line = residual_m <= cfg_.line_residual_factor * scatter_m;
+  // On a line: the residuals as the scatter says, none beyond 4 of it (a
+  // step near the window's edge hides in the RMS, not in the largest).
+  const bool on_a_line = residual_m <= cfg_.line_residual_factor * scatter_m &&
+                         residual_max <= cfg_.line_max_residual_factor * scatter_m;
   const double sigma_rate = std::max(residual_m, scatter_m) / std::sqrt(stt);
   const double disagreement = vd_mean + rate_up;  // vd is down, the rate up
   const double limit = std::max(cfg_.min_disagreement_m_s, cfg_.sigmas * std::hypot(sigma_rate, sigma_vd_m_s));
