@@ -36,6 +36,7 @@ void FixAssembler::merge(const NmeaMessage& msg) {
         } else if constexpr (std::is_same_v<T, RmcMessage>) {
           f.has_rmc = true;
           f.rmc_valid = m.valid;
+          f.rmc_mode = m.mode;
           if (!f.has_gga) {
             f.lat_deg = m.lat_deg;
             f.lon_deg = m.lon_deg;
@@ -44,6 +45,7 @@ void FixAssembler::merge(const NmeaMessage& msg) {
           if (m.course_deg) f.course_deg = m.course_deg;
           if (m.date) f.date = m.date;
         } else if constexpr (std::is_same_v<T, VtgMessage>) {
+          f.vtg_mode = m.mode;
           if (!f.speed_m_s) f.speed_m_s = m.speed_m_s;
           if (!f.course_deg) f.course_deg = m.course_deg;
         } else if constexpr (std::is_same_v<T, GsaMessage>) {

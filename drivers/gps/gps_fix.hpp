@@ -13,8 +13,9 @@ struct GpsFix {
   std::optional<UtcDate> date;
   std::optional<double> lat_deg, lon_deg;
   std::optional<double> alt_msl_m, geoid_sep_m;
-  int quality = 0;  // GGA fix quality (0 = no fix)
+  int quality = 0;  // GGA fix quality (0 = no fix, 6 = estimated: the receiver dead reckoning)
   bool rmc_valid = false;
+  char rmc_mode = 0, vtg_mode = 0;  // NMEA 2.3 mode indicators (0 when absent; E estimated, N not valid)
   std::optional<int> sats;
   std::optional<double> hdop, pdop, vdop;
   std::optional<double> speed_m_s, course_deg;
@@ -23,9 +24,19 @@ struct GpsFix {
   bool has_gll = false, gll_valid = false;
 
   /// A usable position: GGA says fixed, or (without GGA) RMC says valid, or
-  /// (with neither) GLL says valid.
+  /// (with neither) GLL says valid; never one the receiver only extrapolated
+  /// (GGA quality 6, mode E: gpsd's "dead reckoning"): the INS does that
+  /// better, and fusing it would hide an outage.
   bool has_position() const {
-    return lat_deg && lon_deg && (has_gga ? quality > 0 : has_rmc ? rmc_valid : gll_valid);
+    return lat_deg && lon_deg && !estimated() && (has_gga ? quality > 0 : has_rmc ? rmc_valid : gll_valid);
+  }
+  /// The speed and course are a measurement (not from an invalid or extrapolating receiver).
+  bool has_velocity() const { return speed_m_s && course_deg && !estimated() && (!has_rmc || rmc_valid); }
+  /// A sentence of the epoch says the receiver is extrapolating or its data are not valid.
+  bool estimated() const {
+    constexpr int kGgaEstimated = 6;
+    auto not_measured = [](char mode) { return mode == 'E' || mode == 'N'; };
+    return (has_gga && quality == kGgaEstimated) || not_measured(rmc_mode) || not_measured(vtg_mode);
   }
   /// WGS-84 ellipsoidal height = altitude above MSL + geoid separation.
   std::optional<double> ellipsoid_height_m() const {

@@ -40,7 +40,7 @@ bool gnss_from_fix(const drivers::GpsFix& fix, const GnssSigmaConfig& cfg, est::
     out.decimal_year = est::geomag::decimal_year(fix.date->year, fix.date->month, fix.date->day,
                                                  static_cast<double>(fix.utc_ms) / 1000.0);
   }
-  if (fix.speed_m_s && fix.course_deg) {
+  if (fix.has_velocity()) {
     out.has_velocity = true;
     const double course_rad = *fix.course_deg * kDegToRad;
     out.v_ne_m_s = *fix.speed_m_s * Eigen::Vector2d(std::cos(course_rad), std::sin(course_rad));

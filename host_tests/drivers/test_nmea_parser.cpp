@@ -248,3 +248,53 @@ TEST(FixAssembler, NoFixWhenQualityIsZero) {
   EXPECT_FALSE(fix.has_position());
   EXPECT_FALSE(fix.lat_deg.has_value());
 }
+
+namespace {
+
+/// One epoch of `sentences` (bodies, no checksum) at UTC 12:00:00, flushed.
+GpsFix one_epoch(const std::vector<std::string>& sentences) {
+  NmeaParser p;
+  FixAssembler a;
+  NmeaMessage m;
+  GpsFix fix;
+  double t = 1.0;
+  for (const auto& body : sentences) {
+    EXPECT_EQ(p.parse(with_checksum(body), m), ParseResult::Message) << body;
+    a.add(m, t += 0.001, fix);
+  }
+  EXPECT_TRUE(a.flush(fix));
+  return fix;
+}
+
+// A receiver that has lost the sky extrapolates and says so: GGA quality 6,
+// RMC/VTG mode E (u-blox's "dead reckoning fix", gpsd's STATUS_DR); mode N
+// is "not valid". Its position and velocity are no measurement: fusing them
+// would hide an outage behind the receiver's own guess.
+TEST(FixAssembler, AReceiverThatOnlyExtrapolatesGivesNoFix) {
+  const std::string gga = "GPGGA,120000.00,4000.0000,N,10500.0000,W,";
+  const std::string rmc = "GPRMC,120000.00,A,4000.0000,N,10500.0000,W,10.0,90.0,010126,,,";
+  const std::string vtg = "GPVTG,90.0,T,,M,10.0,N,18.5,K,";
+  const GpsFix normal = one_epoch({gga + "1,08,0.9,100.0,M,-20.0,M,,", rmc + "A", vtg + "A"});
+  EXPECT_TRUE(normal.has_position());
+  EXPECT_TRUE(normal.has_velocity());
+  for (const auto& epoch : std::vector<std::vector<std::string>>{
+           {gga + "6,00,99.9,100.0,M,-20.0,M,,", rmc + "E"},  // u-blox dead reckoning
+           {gga + "6,00,99.9,100.0,M,-20.0,M,,"},             // GGA alone
+           {rmc + "E"},                                        // RMC alone
+           {rmc + "N"},
+           {gga + "1,08,0.9,100.0,M,-20.0,M,,", rmc + "A", vtg + "E"}}) {
+    const GpsFix f = one_epoch(epoch);
+    EXPECT_FALSE(f.has_position()) << epoch[0];
+    EXPECT_FALSE(f.has_velocity()) << epoch[0];
+  }
+  // RTK and a simulator's mode S are measurements.
+  EXPECT_TRUE(one_epoch({gga + "4,12,0.6,100.0,M,-20.0,M,1.0,0001", rmc + "R"}).has_position());
+  EXPECT_TRUE(one_epoch({rmc + "S"}).has_position());
+  // An invalid RMC's speed is not used, even beside a fixed GGA.
+  const GpsFix v =
+      one_epoch({gga + "1,08,0.9,100.0,M,-20.0,M,,", "GPRMC,120000.00,V,4000.0000,N,10500.0000,W,10.0,90.0,010126,,,A"});
+  EXPECT_TRUE(v.has_position());
+  EXPECT_FALSE(v.has_velocity());
+}
+
+}  // namespace
