@@ -11,6 +11,7 @@
 
 #include "firmware/cli/command.hpp"
 #include "firmware/cli/exit_codes.hpp"
+#include "firmware/host/sim/effects/effect_list.hpp"
 #include "firmware/host/sim/simulation.hpp"
 
 namespace sinu::cli {
@@ -106,8 +107,10 @@ void add_mode(CLI::App& parent, Action& action, sim::SimMode mode) {
         ->check(CLI::Range(0.0, 1.0));
   }
   auto* fx = sub->add_option("--effects", c->effects_file, "Effects JSON file (docs/simulation.md)");
-  auto* fx_random = sub->add_option("--effects-random", c->effects_random, "Draw K random effects (0-11)")
-                        ->check(CLI::Range(0, 11));
+  const int n_effects = static_cast<int>(sim::kEffectNames.size());
+  auto* fx_random = sub->add_option("--effects-random", c->effects_random,
+                                    "Draw K random effects (0-" + std::to_string(n_effects) + ")")
+                        ->check(CLI::Range(0, n_effects));
   fx->excludes(fx_random);
   sub->add_flag("--unit-accel-errors", c->sim.unit_accel_errors,
                 "Give the unit its own accelerometer scale factors and misalignment, drawn from the seed where "

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "firmware/host/sim/effects.hpp"
+#include "firmware/host/sim/effects/effect_list.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
@@ -87,7 +88,9 @@ TEST(SimulateCli, UsageErrorsExitTwo) {
                       "2"})
                 .exit_code,
             2);
-  EXPECT_EQ(run_sinu({"simulate", "flight", "--out", out, "--seed", "1", "--effects-random", "12"}).exit_code, 2);
+  // One more random effect than the vocabulary has.
+  const std::string too_many = std::to_string(sinu::sim::kEffectNames.size() + 1);
+  EXPECT_EQ(run_sinu({"simulate", "flight", "--out", out, "--seed", "1", "--effects-random", too_many}).exit_code, 2);
   EXPECT_EQ(run_sinu({"simulate", "flight", "--out", out, "--seed", "1", "--imu-rate", "0"}).exit_code, 2);
   EXPECT_EQ(run_sinu({"simulate", "flight", "--out", out, "--seed", "1", "--duration", "10"}).exit_code, 2);
   EXPECT_EQ(run_sinu({"simulate", "static", "--out", out, "--seed", "1", "--duration", "5", "--hours", "1"}).exit_code,
