@@ -20,7 +20,7 @@ bool PositionVelocity::fill(GnssObservation& z) {
       if (dt > cfg_.max_baseline_s) break;
       const double north_m = (z.lat_rad - f.lat_rad) * (wgs84::meridian_radius_m(z.lat_rad) + z.h_m);
       const double east_m =
-          std::remainder(z.lon_rad - f.lon_rad, 2.0 * std::numbers::pi) * (wgs84::transverse_radius_m(z.lat_rad) + z.h_m) *
+          wgs84::lon_difference_rad(z.lon_rad, f.lon_rad) * (wgs84::transverse_radius_m(z.lat_rad) + z.h_m) *
           std::cos(z.lat_rad);
       z.v_ne_m_s = {north_m / dt, east_m / dt};
       const double white = std::sqrt(cfg_.white_fraction * (sigma_h * sigma_h + f.sigma_h_m * f.sigma_h_m)) / dt;

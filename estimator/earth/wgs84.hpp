@@ -3,6 +3,8 @@
 // References: NIMA TR8350.2 (WGS-84 constants), Groves, "Principles of GNSS,
 // Inertial, and Multisensor Integrated Navigation Systems", 2nd ed., ch. 2.
 #include <Eigen/Core>
+#include <cmath>
+#include <numbers>
 
 namespace sinu::est::wgs84 {
 
@@ -14,6 +16,11 @@ inline constexpr double kOmegaIe = 7.2921151467e-5;     // Earth rotation rate [
 inline constexpr double kGM = 3.986004418e14;           // gravitational constant [m^3/s^2]
 inline constexpr double kGammaEquator = 9.7803253359;   // normal gravity at the equator [m/s^2]
 inline constexpr double kSomiglianaK = 0.00193185265241;  // Somigliana's constant
+
+/// A longitude [rad] in [-pi, pi]: the antimeridian is no edge of the map.
+inline double wrap_lon_rad(double lon_rad) { return std::remainder(lon_rad, 2.0 * std::numbers::pi); }
+/// Longitude a - b [rad] the short way, in [-pi, pi] (179.9 E - 179.9 W = -0.2 deg).
+inline double lon_difference_rad(double a_rad, double b_rad) { return wrap_lon_rad(a_rad - b_rad); }
 
 /// Meridian radius of curvature R_M (north-south) [m].
 double meridian_radius_m(double lat_rad);

@@ -63,7 +63,7 @@ void strapdown_step(NavState& nav, const BodyRates& prev, const BodyRates& cur, 
   const double lat_old = nav.lat_rad;
   nav.h_m -= v_avg.z() * T;
   nav.lat_rad += v_avg.x() * T / rm_mid;
-  nav.lon_rad += v_avg.y() * T / (rn_mid * std::cos(0.5 * (lat_old + nav.lat_rad)));
+  nav.lon_rad = wgs84::wrap_lon_rad(nav.lon_rad + v_avg.y() * T / (rn_mid * std::cos(0.5 * (lat_old + nav.lat_rad))));
   nav.v_n_m_s = v1;
   nav.t_s += T;
 }

@@ -429,7 +429,7 @@ void Navigator::recover(RecoveryAction action, const GnssObservation& z, double 
     // IMU position = antenna - C l, carried forward to the filter time.
     const Eigen::Vector3d offset = -lever_n + nav_.v_n_m_s * dt_back;
     nav_.lat_rad = z.lat_rad + offset.x() / rm;
-    nav_.lon_rad = z.lon_rad + offset.y() / (rn * std::cos(z.lat_rad));
+    nav_.lon_rad = wgs84::wrap_lon_rad(z.lon_rad + offset.y() / (rn * std::cos(z.lat_rad)));
     nav_.h_m = z.h_m - offset.z();
     filter_.reset_block(L.pos, z.sigma_ned_m);
     if (L.has(Effect::GpsPositionBias)) {

@@ -41,11 +41,12 @@ void NavMetrics::score_gnss(const TruthPoint& a, const TruthPoint& b) {
     pending_gnss_.pop();
     if (g.t_s < a.t_s || b.t_s - a.t_s > 1.0) continue;  // outside truth, or truth has a gap here
     const double f = b.t_s > a.t_s ? (g.t_s - a.t_s) / (b.t_s - a.t_s) : 0.0;
-    const double lat = a.lat_rad + f * (b.lat_rad - a.lat_rad), lon = a.lon_rad + f * (b.lon_rad - a.lon_rad);
+    const double lat = a.lat_rad + f * (b.lat_rad - a.lat_rad);
+    const double lon = w::wrap_lon_rad(a.lon_rad + f * w::lon_difference_rad(b.lon_rad, a.lon_rad));
     const double h = a.h_m + f * (b.h_m - a.h_m);
     const Eigen::Vector3d lever_n = a.has_att ? Eigen::Vector3d(a.q_nb * lever_arm_b_m_) : Eigen::Vector3d::Zero();
     const Eigen::Vector3d dp((g.lat_rad - lat) * (w::meridian_radius_m(lat) + h) - lever_n.x(),
-                             (g.lon_rad - lon) * (w::transverse_radius_m(lat) + h) * std::cos(lat) - lever_n.y(),
+                             w::lon_difference_rad(g.lon_rad, lon) * (w::transverse_radius_m(lat) + h) * std::cos(lat) - lever_n.y(),
                              -(g.h_m - h) - lever_n.z());
     ++gnss_compared;
     gnss_sum_h2 += dp.head<2>().squaredNorm();
@@ -60,7 +61,7 @@ void NavMetrics::add_truth(const TruthPoint& tr, const est::NavState& nav, const
   prev_truth_ = tr;
   have_prev_truth_ = true;
   const Eigen::Vector3d dp((nav.lat_rad - tr.lat_rad) * (w::meridian_radius_m(tr.lat_rad) + tr.h_m),
-                           (nav.lon_rad - tr.lon_rad) * (w::transverse_radius_m(tr.lat_rad) + tr.h_m) * std::cos(tr.lat_rad),
+                           w::lon_difference_rad(nav.lon_rad, tr.lon_rad) * (w::transverse_radius_m(tr.lat_rad) + tr.h_m) * std::cos(tr.lat_rad),
                            -(nav.h_m - tr.h_m));
   const double err_h = dp.head<2>().norm();
   ++compared;

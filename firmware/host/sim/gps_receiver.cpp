@@ -53,7 +53,7 @@ void GpsReceiver::antenna(const TrueMotion& m, double& lat, double& lon, double&
   namespace w = est::wgs84;
   const Eigen::Vector3d d_n = m.C_nb * lever_arm_b_m_;
   lat = m.lat_rad + d_n.x() / (w::meridian_radius_m(m.lat_rad) + m.h_m);
-  lon = m.lon_rad + d_n.y() / ((w::transverse_radius_m(m.lat_rad) + m.h_m) * std::cos(m.lat_rad));
+  lon = w::wrap_lon_rad(m.lon_rad + d_n.y() / ((w::transverse_radius_m(m.lat_rad) + m.h_m) * std::cos(m.lat_rad)));
   h = m.h_m - d_n.z();
   // Antenna velocity over the Earth: v + C_nb (omega_eb_b x l), omega_eb_b = omega_nb_b + C_bn omega_en_n.
   const Eigen::Vector3d omega_eb_b = m.omega_nb_b_rad_s + m.C_nb.transpose() * m.omega_en_n_rad_s;

@@ -47,7 +47,7 @@ Measurement gnss_position_measurement(const ErrorStateFilter& filter, const NavS
   const Eigen::Vector3d offset_n = t.antenna_offset_n - nav.v_n_m_s * dt_back;
   Eigen::Vector3d y;
   y.x() = (nav.lat_rad - z.lat_rad) * rm + offset_n.x();
-  y.y() = (nav.lon_rad - z.lon_rad) * rn * std::cos(nav.lat_rad) + offset_n.y();
+  y.y() = wgs84::lon_difference_rad(nav.lon_rad, z.lon_rad) * rn * std::cos(nav.lat_rad) + offset_n.y();
   y.z() = -(nav.h_m - z.h_m) + offset_n.z();
   y += t.measurement_offset_n;
   m.innovation = y;
