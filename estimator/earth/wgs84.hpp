@@ -21,6 +21,10 @@ inline constexpr double kSomiglianaK = 0.00193185265241;  // Somigliana's consta
 inline double wrap_lon_rad(double lon_rad) { return std::remainder(lon_rad, 2.0 * std::numbers::pi); }
 /// Longitude a - b [rad] the short way, in [-pi, pi] (179.9 E - 179.9 W = -0.2 deg).
 inline double lon_difference_rad(double a_rad, double b_rad) { return wrap_lon_rad(a_rad - b_rad); }
+/// The longitude a fraction f of the short way from a to b [rad].
+inline double lon_between_rad(double a_rad, double b_rad, double f) {
+  return wrap_lon_rad(a_rad + f * lon_difference_rad(b_rad, a_rad));
+}
 
 /// Meridian radius of curvature R_M (north-south) [m].
 double meridian_radius_m(double lat_rad);

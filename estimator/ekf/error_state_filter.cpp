@@ -384,9 +384,7 @@ void ErrorStateFilter::add_field_coupled_noise(const Eigen::Matrix3d& Q_att, boo
 }
 
 void ErrorStateFilter::reset_block(const Slice& block, const Eigen::Vector3d& sigma) {
-  P_.middleRows(block.start, 3).setZero();
-  P_.middleCols(block.start, 3).setZero();
-  for (Eigen::Index i = 0; i < 3; ++i) P_(block.start + i, block.start + i) = sigma(i) * sigma(i);
+  for (Eigen::Index i = 0; i < 3; ++i) reset_state(block.start + i, sigma(i));
 }
 
 void ErrorStateFilter::reset_state(Eigen::Index i, double sigma) {

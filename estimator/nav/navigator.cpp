@@ -384,13 +384,17 @@ void Navigator::learn_position_scale(double t_meas) {
   last_pos_scale_t_s_ = t_meas;
 }
 
+void Navigator::begin_reset(double t_meas) {
+  predict_.flush(filter_);
+  if (counters_.resets() == 0) counters_.first_reset_t_s = t_meas;
+}
+
 void Navigator::check_vertical(const GnssObservation& z, double t_meas) {
   const StateLayout& L = filter_.layout();
   const Eigen::Index vd = L.vel.start + 2;
   VerticalRate rate;
   if (!vertical_.push(t_meas, z.h_m, nav_.v_n_m_s.z(), std::sqrt(filter_.P()(vd, vd)), rate)) return;
-  predict_.flush(filter_);
-  if (counters_.resets() == 0) counters_.first_reset_t_s = t_meas;
+  begin_reset(t_meas);
   nav_.v_n_m_s.z() = rate.vd_m_s;
   filter_.reset_state(vd, std::hypot(rate.sigma_m_s, cfg_.vertical_reset_sigma_m_s));
   if (L.has(Effect::AccelBias)) {
@@ -407,8 +411,7 @@ void Navigator::check_vertical(const GnssObservation& z, double t_meas) {
 void Navigator::recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas) {
   if (action == RecoveryAction::None) return;
   vertical_.restart();
-  predict_.flush(filter_);
-  if (counters_.resets() == 0) counters_.first_reset_t_s = t_meas;
+  begin_reset(t_meas);
   const StateLayout& L = filter_.layout();
   const double sigma_vd = std::sqrt(filter_.P()(L.vel.start + 2, L.vel.start + 2));
   const Eigen::Vector3d sigma_v(z.sigma_vel_m_s, z.sigma_vel_m_s, sigma_vd);

@@ -220,6 +220,8 @@ class Navigator {
   /// The largest latency the longest horizon can serve (two IMU periods of margin).
   double max_gps_latency_s() const { return std::max(0.0, horizon_limit_s() - 2.0 * period_s_ - 0.01); }
   void recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas);
+  /// Before any reset: P brought to now, the first reset's time kept.
+  void begin_reset(double t_meas);
   /// The fix's height to the vertical check; resets vd when it has run away.
   void check_vertical(const GnssObservation& z, double t_meas);
   void learn_position_scale(double t_meas);

@@ -104,13 +104,14 @@ inline bool VerticalCheck::push(double t_s, double h_m, double vd_ins_m_s, doubl
     sth += dt * (fix_[k].h_m - h_mean);
   }
   const double rate_up = sth / stt;
-  double residual2 = 0.0, residual_max = 0.0;
+  double residual2 = 0.0, residual_max = 0.0, r_prev = 0.0;
   std::array<double, kMax> step{};  // fix-to-fix scatter about the line: a height step moves one of them
   for (std::size_t k = 0; k < n_; ++k) {
     const double r = fix_[k].h_m - h_mean - rate_up * (fix_[k].t_s - t_mean);
     residual2 += r * r;
     residual_max = std::max(residual_max, std::abs(r));
-    if (k > 0) step[k - 1] = std::abs(r - (fix_[k - 1].h_m - h_mean - rate_up * (fix_[k - 1].t_s - t_mean)));
+    if (k > 0) step[k - 1] = std::abs(r - r_prev);
+    r_prev = r;
   }
   const std::size_t m = n_ - 1;
   std::nth_element(step.begin(), step.begin() + static_cast<std::ptrdiff_t>(m / 2),

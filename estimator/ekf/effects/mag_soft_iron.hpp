@@ -11,7 +11,7 @@ struct MagSoftIron {
   static constexpr EffectSpec spec{Effect::MagSoftIron, "mag_soft_iron", Components::Symmetric, "-", 1.0, 0.2, 0.0,
                                    true, 0.3, Triad::None, Triad::None, Needs::Magnetometer,
                                    "a full turn in heading (and some bank)"};
-  /// d(S u)/dD for D = [xx yy zz xy xz yz], u = C_bn F the Earth field in the body.
+  /// d(S u)/dD for D = [xx yy zz xy xz yz], u the Earth field in the magnetometer's axes.
   template <class T> static void magnetometer(EffectView, T& t) {
     if (!t.slice.active()) return;
     const Eigen::Vector3d& u = t.u;

@@ -42,7 +42,7 @@ void NavMetrics::score_gnss(const TruthPoint& a, const TruthPoint& b) {
     if (g.t_s < a.t_s || b.t_s - a.t_s > 1.0) continue;  // outside truth, or truth has a gap here
     const double f = b.t_s > a.t_s ? (g.t_s - a.t_s) / (b.t_s - a.t_s) : 0.0;
     const double lat = a.lat_rad + f * (b.lat_rad - a.lat_rad);
-    const double lon = w::wrap_lon_rad(a.lon_rad + f * w::lon_difference_rad(b.lon_rad, a.lon_rad));
+    const double lon = w::lon_between_rad(a.lon_rad, b.lon_rad, f);
     const double h = a.h_m + f * (b.h_m - a.h_m);
     const Eigen::Vector3d lever_n = a.has_att ? Eigen::Vector3d(a.q_nb * lever_arm_b_m_) : Eigen::Vector3d::Zero();
     const Eigen::Vector3d dp((g.lat_rad - lat) * (w::meridian_radius_m(lat) + h) - lever_n.x(),

@@ -96,8 +96,7 @@ class ReplayObserver final : public est::NavObserver {
         const double a = span > 0.0 ? (truth_pt_.t_s - prev_.nav.t_s) / span : 1.0;
         est::NavState s = o.nav;
         s.lat_rad = prev_.nav.lat_rad + a * (o.nav.lat_rad - prev_.nav.lat_rad);
-        s.lon_rad = est::wgs84::wrap_lon_rad(prev_.nav.lon_rad +
-                                             a * est::wgs84::lon_difference_rad(o.nav.lon_rad, prev_.nav.lon_rad));
+        s.lon_rad = est::wgs84::lon_between_rad(prev_.nav.lon_rad, o.nav.lon_rad, a);
         s.h_m = prev_.nav.h_m + a * (o.nav.h_m - prev_.nav.h_m);
         s.v_n_m_s = prev_.nav.v_n_m_s + a * (o.nav.v_n_m_s - prev_.nav.v_n_m_s);
         s.q_nb = prev_.nav.q_nb.slerp(a, o.nav.q_nb);

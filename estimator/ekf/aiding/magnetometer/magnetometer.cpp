@@ -23,10 +23,10 @@ Measurement magnetometer_measurement(const ErrorStateFilter& filter, const NavSt
                                      const Eigen::Vector3d& mag_b_uT, double sigma_uT, double gate_sigma) {
   const StateLayout& L = filter.layout();
   const Eigen::Matrix3d C_bn = nav.C_nb().transpose();
-  const Eigen::Matrix3d S = filter.mag_soft_iron();
-  const Eigen::Matrix3d A = filter.mag_axes();
+  const Eigen::Matrix3d S = filter.mag_soft_iron(), R = filter.mag_misalignment();
+  const Eigen::Matrix3d A = S * R;  // filter.mag_axes()
   const Eigen::Vector3d u_b = C_bn * filter.mag_earth_field_n_uT();
-  const Eigen::Vector3d u = filter.mag_misalignment() * u_b;
+  const Eigen::Vector3d u = R * u_b;
   Measurement m;
   m.gate_sigma = gate_sigma;
   m.innovation = S * u + filter.mag_hard_iron_b_uT() - mag_b_uT;
