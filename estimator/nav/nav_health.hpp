@@ -39,15 +39,16 @@ enum : std::uint32_t {
   kStill = 1u << 20,          // state: standing still (IMU quiet, GNSS speed ~0): zero-velocity updates
   kNonholonomicFused = 1u << 21,
   kVehicleChanged = 1u << 22,  // vehicle auto: the ground-vehicle constraints were switched on or off
+  kGyroBiasReleased = 1u << 23,  // the magnetometer's misfit stayed on one side: the gyro bias about the vertical widened
 };
 }  // namespace nav_flag
 
 /// The flags' names, bit by bit (nav.csv documents its `flags` column with them).
-inline constexpr std::array<const char*, 23> kNavFlagNames = {
+inline constexpr std::array<const char*, 24> kNavFlagNames = {
     "aligned", "gnss_timeout", "mag_timeout", "lost", "gnss_suspect", "clipping", "ground_vehicle", "",
     "gnss_pos_fused", "gnss_pos_rejected", "gnss_vel_fused", "gnss_vel_rejected", "mag_fused", "mag_rejected",
     "position_reset", "velocity_reset", "yaw_reset", "imu_gap", "imu_dropped", "aligned_now", "still",
-    "nonholonomic_fused", "vehicle_changed"};
+    "nonholonomic_fused", "vehicle_changed", "gyro_bias_released"};
 
 struct NavCounters {
   std::array<std::uint64_t, kAidingSourceCount> accepted{}, rejected{};
@@ -62,6 +63,7 @@ struct NavCounters {
   std::uint64_t position_resets = 0, velocity_resets = 0, yaw_resets = 0;
   std::uint64_t vertical_resets = 0;     // of velocity_resets: vd to the GNSS heights' rate (vertical_check.hpp)
   std::uint64_t mag_reanchors = 0;       // hard iron re-anchored after a disturbance
+  std::uint64_t gyro_bias_releases = 0;  // gyro bias about the vertical widened by the heading check
   std::uint64_t position_inflations = 0;  // position widened by a small misfit, the epoch fused again
   std::uint64_t gnss_timeouts = 0;       // times the GNSS position stopped for gnss_timeout_s
   double gnss_timeout_total_s = 0.0;     // time spent dead reckoning

@@ -46,6 +46,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   alignment_result_ = {};
   recovery_.configure(cfg.recovery);
   vertical_.configure(cfg.vertical);
+  heading_.configure(cfg.heading);
   vel_noise_started_ = false;
   stillness_.configure(cfg.stillness);
   vehicle_.configure(cfg.vehicle_detector);
@@ -269,6 +270,7 @@ void Navigator::align(const ImuSample& s, double dt) {
     filter_.seed_position_from_fix(z.sigma_ned_m);
     recovery_.restart(s.t_s);
     vertical_.restart();
+    heading_.restart();
     last_gnss_pos_t_s_ = s.t_s;
     events_ |= nav_flag::kAlignedNow;
     return;
@@ -408,9 +410,31 @@ void Navigator::check_vertical(const GnssObservation& z, double t_meas) {
   events_ |= nav_flag::kVelocityReset;
 }
 
+void Navigator::check_heading(double t_meas) {
+  const StateLayout& L = filter_.layout();
+  if (last_result_.rows != 3 || !L.has(Effect::GyroBias)) return;
+  // The reading's change for a turn of the heading by one radian.
+  const Eigen::Vector3d F = filter_.mag_earth_field_n_uT();
+  const Eigen::Vector3d turn_b = filter_.mag_axes() * (nav_.C_nb().transpose() * Eigen::Vector3d(-F.y(), F.x(), 0.0));
+  const double n2 = turn_b.squaredNorm();
+  if (!(n2 > 1e-6)) return;
+  const double misfit = turn_b.dot(last_result_.innovation) / n2;
+  const double sigma = turn_b.cwiseProduct(last_result_.innovation_sigma).norm() / n2;
+  double mean = 0.0;
+  if (!heading_.push(t_meas, misfit, sigma, mean)) return;
+  // The gyro bias about the vertical has shifted: let it move.
+  predict_.flush(filter_);
+  const Eigen::Vector3d down_b = nav_.C_nb().row(2).transpose();
+  const double w = cfg_.heading_bias_widen_rad_s;
+  filter_.add_block_noise(L.of(Effect::GyroBias), w * w * down_b * down_b.transpose());
+  ++counters_.gyro_bias_releases;
+  events_ |= nav_flag::kGyroBiasReleased;
+}
+
 void Navigator::recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas) {
   if (action == RecoveryAction::None) return;
   vertical_.restart();
+  heading_.restart();
   begin_reset(t_meas);
   const StateLayout& L = filter_.layout();
   const double sigma_vd = std::sqrt(filter_.P()(L.vel.start + 2, L.vel.start + 2));
@@ -493,6 +517,7 @@ void Navigator::fuse_magnetometer(const ImuSample& s) {
   last_mag_fused_t_s_ = s.t_s;
   const bool ok = fuse(AidingSource::Magnetometer,
                        magnetometer_measurement(filter_, nav_, s.mag_b_uT, mag_noise_.sigma(), cfg_.gate_sigma), s.t_s);
+  check_heading(s.t_s);
   mag_noise_.learn(last_result_, since);
   if (ok) {
     mag_reject_since_s_ = -1.0;
@@ -504,6 +529,7 @@ void Navigator::fuse_magnetometer(const ImuSample& s) {
     predict_.flush(filter_);
     filter_.reanchor_hard_iron(nav_, s.mag_b_uT, 2.0 * mag_noise_.sigma());
     ++counters_.mag_reanchors;
+    heading_.restart();
     mag_reject_since_s_ = -1.0;
   }
 }

@@ -32,6 +32,7 @@
 #include "estimator/nav/noise_adapter.hpp"
 #include "estimator/nav/stillness.hpp"
 #include "estimator/nav/vehicle_detector.hpp"
+#include "estimator/nav/heading_check.hpp"
 #include "estimator/nav/vertical_check.hpp"
 #include "estimator/prefilter/imu_prefilter.hpp"
 #include "estimator/util/ring_buffer.hpp"
@@ -59,6 +60,11 @@ struct NavigatorConfig {
   VerticalCheckConfig vertical;
   double vertical_reset_sigma_m_s = 0.5;
   double vertical_bias_widen_m_s2 = 0.5;
+  // The heading against the magnetometer (heading_check.hpp): when its
+  // innovations stay on one side, the gyro bias about the vertical is widened
+  // by heading_bias_widen_rad_s.
+  HeadingCheckConfig heading;
+  double heading_bias_widen_rad_s = 0.02;
   ImuScreenConfig screen;            // full scales: clipping
   // The delayed horizon: at least this, and it grows with the latency
   // estimate (latency + horizon_margin_s, up to max_horizon_s and what the IMU
@@ -224,6 +230,9 @@ class Navigator {
   void begin_reset(double t_meas);
   /// The fix's height to the vertical check; resets vd when it has run away.
   void check_vertical(const GnssObservation& z, double t_meas);
+  /// The last field update's misfit to the heading check; widens the gyro bias
+  /// about the vertical when the misfit is the filter's.
+  void check_heading(double t_meas);
   void learn_position_scale(double t_meas);
   void update_health(double t_now, double dt);
   void emit();
@@ -240,6 +249,7 @@ class Navigator {
   ErrorStateFilter filter_;
   GnssRecovery recovery_;
   VerticalCheck vertical_;
+  HeadingCheck heading_;
   NavState nav_;
   ImuSample prev_;
   bool have_prev_ = false;

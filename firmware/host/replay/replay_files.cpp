@@ -150,6 +150,7 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
                     {"yaw", c.yaw_resets},
                     {"vertical_velocity", c.vertical_resets}}},
                   {"magnetometer_reanchors", c.mag_reanchors},
+                  {"gyro_bias_releases", c.gyro_bias_releases},
                   {"position_inflations", c.position_inflations},
                   {"first_reset_t", c.resets() ? json(c.first_reset_t_s) : json(nullptr)},
                   {"gnss_timeouts", c.gnss_timeouts},
