@@ -16,11 +16,14 @@
 // (a = 1 - exp(-dt / tau)); the check fires when it stays beyond `sigmas` times
 // that and the mean heading misfit beyond `min_misfit_rad` for `persist_s`:
 // then the misfit is the filter's, not the sensor's, and the gyro bias about
-// the vertical is let move. A field that moves in the body (motor currents)
-// mostly moves along the body's vertical, which a turn of the heading does
-// not. The field's noise is still learnt meanwhile: not learning it from a
-// one-sided misfit changed nothing here and cost the real quadcopter 0.14 deg
-// (its motor currents are such a misfit, and noise to the filter).
+// the vertical is let move. The navigator feeds it on straight legs only (a
+// field model that is not quite right misfits by an amount that follows the
+// heading, and in a turn the filter lags that one-signed). A field that
+// moves in the body (motor currents) mostly moves along the body's vertical,
+// which a turn of the heading does not. The field's noise is still learnt
+// meanwhile: not learning it from a one-sided misfit changed little here
+// and cost the real quadcopter 0.14 deg (its motor currents are such a
+// misfit, and noise to the filter).
 #include <cmath>
 
 namespace sinu::est {

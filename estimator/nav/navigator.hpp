@@ -61,10 +61,13 @@ struct NavigatorConfig {
   double vertical_reset_sigma_m_s = 0.5;
   double vertical_bias_widen_m_s2 = 0.5;
   // The heading against the magnetometer (heading_check.hpp): when its
-  // innovations stay on one side, the gyro bias about the vertical is widened
-  // by heading_bias_widen_rad_s.
+  // innovations stay on one side on a straight leg (turning slower than
+  // heading_check_max_turn_rad_s), the gyro bias about the vertical is
+  // widened by heading_bias_widen_rad_s.
   HeadingCheckConfig heading;
   double heading_bias_widen_rad_s = 0.02;
+  double heading_check_max_turn_rad_s = 0.052;  // 3 deg/s: judged on straight legs
+  double course_min_speed_m_s = 3.0;            // the GNSS course's rate from this speed on
   ImuScreenConfig screen;            // full scales: clipping
   // The delayed horizon: at least this, and it grows with the latency
   // estimate (latency + horizon_margin_s, up to max_horizon_s and what the IMU
@@ -233,6 +236,8 @@ class Navigator {
   /// The last field update's misfit to the heading check; widens the gyro bias
   /// about the vertical when the misfit is the filter's.
   void check_heading(double t_meas);
+  /// The GNSS course's rate (moving, a fix within 1 s), else the INS heading's [rad/s].
+  double turn_rate_rad_s(double t_s) const;
   void learn_position_scale(double t_meas);
   void update_health(double t_now, double dt);
   void emit();
@@ -250,6 +255,10 @@ class Navigator {
   GnssRecovery recovery_;
   VerticalCheck vertical_;
   HeadingCheck heading_;
+  // The turn rate the heading check is judged by: the GNSS course's (smoothed
+  // over 1 s) while moving, else the INS heading's between field updates.
+  double course_rad_ = 0.0, course_t_s_ = -1e300, course_rate_rad_s_ = 0.0;
+  double heading_yaw_rad_ = 0.0, heading_yaw_t_s_ = -1e300, yaw_rate_rad_s_ = 0.0;
   NavState nav_;
   ImuSample prev_;
   bool have_prev_ = false;
