@@ -99,6 +99,11 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
                 num(c.imu_invalid + c.imu_non_increasing).c_str(), num(c.imu_invalid).c_str(),
                 num(c.imu_non_increasing).c_str(), num(c.gnss_timeouts).c_str(), num(c.gnss_timeout_total_s).c_str());
   }
+  if (c.gyro_bias_releases > 0 || c.mag_reanchors > 0) {
+    std::printf("  the magnetometer's misfit: gyro bias about the vertical released %s time(s) (heading check), hard "
+                "iron re-anchored %s time(s)\n",
+                num(c.gyro_bias_releases).c_str(), num(c.mag_reanchors).c_str());
+  }
 }
 
 int run(ReplayCliOptions& c) {
