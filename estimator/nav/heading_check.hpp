@@ -48,9 +48,8 @@ class HeadingCheck {
     weight_ = 0.0;
     since_s_ = kNever;
   }
-  /// One update's heading misfit [rad] and its sigma. True when the misfit is
-  /// the filter's (`mean_misfit_rad` is then the running mean).
-  bool push(double t_s, double misfit_rad, double sigma_rad, double& mean_misfit_rad) {
+  /// One update's heading misfit [rad] and its sigma. True when the misfit is the filter's.
+  bool push(double t_s, double misfit_rad, double sigma_rad) {
     if (!std::isfinite(t_s) || !std::isfinite(misfit_rad) || !(sigma_rad > 0.0)) return false;
     if (last_t_s_ != kNever && t_s <= last_t_s_) restart();
     const double dt = last_t_s_ == kNever ? 0.0 : t_s - last_t_s_;
@@ -72,7 +71,6 @@ class HeadingCheck {
     }
     if (since_s_ == kNever) since_s_ = t_s;
     if (t_s - since_s_ < cfg_.persist_s) return false;
-    mean_misfit_rad = mean_rad_;
     restart();
     hold_until_s_ = t_s + cfg_.hold_off_s;
     return true;

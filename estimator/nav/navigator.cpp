@@ -10,6 +10,7 @@
 #include "estimator/ekf/aiding/gnss_velocity/gnss_velocity.hpp"
 #include "estimator/ekf/aiding/magnetometer/magnetometer.hpp"
 #include "estimator/ekf/aiding/zero_velocity/zero_velocity.hpp"
+#include "estimator/ins/rotation.hpp"
 
 namespace sinu::est {
 
@@ -365,7 +366,7 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
         course_t_s_ = kNever;
       } else {
         if (dt_c > 0.0 && dt_c < 1.5) {
-          const double rate = std::abs(std::remainder(course - course_rad_, 2.0 * M_PI)) / dt_c;
+          const double rate = std::abs(wrap_pi(course - course_rad_)) / dt_c;
           course_rate_rad_s_ += std::min(1.0, dt_c / 1.0) * (rate - course_rate_rad_s_);
         } else {
           course_rate_rad_s_ = 1e9;  // not known yet
@@ -435,7 +436,7 @@ void Navigator::check_heading(double t_meas) {
   const StateLayout& L = filter_.layout();
   const Eigen::Vector3d x_n = nav_.C_nb().col(0);  // the body's nose
   const double yaw = std::atan2(x_n.y(), x_n.x()), dt_yaw = t_meas - heading_yaw_t_s_;
-  yaw_rate_rad_s_ = dt_yaw > 0.0 && dt_yaw < 1.0 ? std::abs(std::remainder(yaw - heading_yaw_rad_, 2.0 * M_PI)) / dt_yaw
+  yaw_rate_rad_s_ = dt_yaw > 0.0 && dt_yaw < 1.0 ? std::abs(wrap_pi(yaw - heading_yaw_rad_)) / dt_yaw
                                                  : 1e9;
   heading_yaw_rad_ = yaw;
   heading_yaw_t_s_ = t_meas;
@@ -447,7 +448,6 @@ void Navigator::check_heading(double t_meas) {
   if (!(n2 > 1e-6)) return;
   const double misfit = turn_b.dot(last_result_.innovation) / n2;
   const double sigma = turn_b.cwiseProduct(last_result_.innovation_sigma).norm() / n2;
-  double mean = 0.0;
   // Judged on straight legs only: while the heading turns, a field model that
   // is not quite right (a soft iron the model lacks) misfits by an amount that
   // follows the heading, and the filter lags it by a few degrees one-signed
@@ -458,7 +458,7 @@ void Navigator::check_heading(double t_meas) {
     heading_.restart();
     return;
   }
-  if (!heading_.push(t_meas, misfit, sigma, mean)) return;
+  if (!heading_.push(t_meas, misfit, sigma)) return;
   // The gyro bias about the vertical has shifted: let it move.
   predict_.flush(filter_);
   const Eigen::Vector3d down_b = nav_.C_nb().row(2).transpose();

@@ -30,8 +30,7 @@ CheckRun run(unsigned seed, Misfit misfit) {
   CheckRun r;
   for (int k = 0; k < static_cast<int>(600.0 * kRate_hz); ++k) {
     const double t = k / kRate_hz;
-    double mean = 0.0;
-    if (check.push(t, misfit(t) + noise(rng), kSigma_rad, mean) && r.fired++ == 0) r.first_fire_t = t;
+    if (check.push(t, misfit(t) + noise(rng), kSigma_rad) && r.fired++ == 0) r.first_fire_t = t;
   }
   return r;
 }
@@ -76,14 +75,13 @@ TEST(HeadingCheck, AShortBurstIsNoShift) {
 TEST(HeadingCheck, TimeGoingBackStartsOver) {
   HeadingCheck check;
   check.configure({});
-  double mean = 0.0;
   const double misfit = 5.0 * M_PI / 180.0;
   // 4 s of a one-sided misfit, time jumps back, 1.5 s more: never 2 s after a restart.
   int fired = 0;
-  for (int k = 0; k < 40; ++k) fired += check.push(100.0 + k / kRate_hz, misfit, kSigma_rad, mean);
+  for (int k = 0; k < 40; ++k) fired += check.push(100.0 + k / kRate_hz, misfit, kSigma_rad);
   EXPECT_EQ(fired, 1) << "4 s of a 5-deg misfit fires once";
   check.restart();
-  for (int k = 0; k < 15; ++k) fired += check.push(50.0 + k / kRate_hz, misfit, kSigma_rad, mean);
+  for (int k = 0; k < 15; ++k) fired += check.push(50.0 + k / kRate_hz, misfit, kSigma_rad);
   EXPECT_EQ(fired, 1) << "1.5 s after starting over is not 2 s";
 }
 
