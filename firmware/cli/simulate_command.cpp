@@ -1,6 +1,6 @@
 // sinu simulate flight|static --out DIR --seed N [--duration S | --hours H]
 //   [--imu-rate HZ] [--gps-rate HZ] [--effects FILE | --effects-random K]
-//   [--unit-accel-errors] [--hidden-out FILE] [--corrupt-fraction F]
+//   [--unit-accel-errors] [--hidden-out FILE] [--corrupt-fraction F] [--site LAT,LON,H]
 //   static: [--positions N [--hold-s S] [--transition-s S]]
 // Writes a dataset folder (dataset-format.md) and, optionally, the hidden
 // truth (error-model parameters and effects) as JSON outside that folder.
@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "firmware/cli/command.hpp"
 #include "firmware/cli/exit_codes.hpp"
@@ -24,6 +25,7 @@ struct SimulateCli {
   int effects_random = -1;
   double hours = 0.0;
   std::string hidden_out;
+  std::vector<double> site;
 };
 
 bool inside(const std::filesystem::path& file, const std::filesystem::path& dir) {
@@ -36,6 +38,7 @@ bool inside(const std::filesystem::path& file, const std::filesystem::path& dir)
 
 int simulate(SimulateCli c) {
   if (c.hours > 0.0) c.sim.duration_s = c.hours * 3600.0;
+  if (c.site.size() == 3) c.sim.site_lat_lon_h = std::array<double, 3>{c.site[0], c.site[1], c.site[2]};
   // A multi-position session is for calibrating the unit's scale and misalignment: it has them.
   if (c.sim.positions > 1) c.sim.unit_accel_errors = true;
   if (!c.hidden_out.empty() && inside(c.hidden_out, c.sim.out_dir)) {
@@ -126,6 +129,10 @@ void add_mode(CLI::App& parent, Action& action, sim::SimMode mode) {
     sub->add_option("--transition-s", c->sim.transition_s, "With --positions: time to turn between attitudes [s]")
         ->capture_default_str();
   }
+  sub->add_option("--site", c->site, "LAT,LON,H: the site's latitude and longitude [deg] and ground height [m] "
+                                     "instead of the seed's (high latitudes, the date line)")
+      ->expected(3)
+      ->delimiter(',');
   sub->add_option("--hidden-out", c->hidden_out, "Write the hidden truth (error model, effects) as JSON here; "
                                                  "never inside the dataset folder");
   sub->callback([&action, c] { action = [c] { return simulate(*c); }; });

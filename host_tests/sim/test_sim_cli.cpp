@@ -79,6 +79,35 @@ TEST(SimulateCli, RatesAndDurationAreHonoured) {
   EXPECT_NE(insp.out.find("10.00 Hz"), std::string::npos) << insp.out;
 }
 
+// --site puts the flight where the seed would not (|lat| < 60 by default): the
+// hidden truth, the first truth row and the first GGA say the same place; the
+// rest of the seed's draw is unchanged (same IMU row count, same clock start).
+TEST(SimulateCli, SiteOptionPlacesTheFlight) {
+  TempDir tmp;
+  const auto r = run_sinu({"simulate", "flight", "--out", tmp.file("d"), "--seed", "2", "--duration", "300",
+                           "--site", "78.2,15.6,40", "--hidden-out", tmp.file("h.json")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto hidden = nlohmann::json::parse(read_file(tmp.file("h.json")));
+  EXPECT_DOUBLE_EQ(hidden["site"]["lat_deg"].get<double>(), 78.2);
+  EXPECT_DOUBLE_EQ(hidden["site"]["lon_deg"].get<double>(), 15.6);
+  EXPECT_DOUBLE_EQ(hidden["site"]["ground_h_m"].get<double>(), 40.0);
+  const std::string truth = read_file(tmp.file("d/truth.csv"));
+  const std::string first_row = truth.substr(truth.find('\n') + 1, 60);
+  EXPECT_NE(first_row.find(",78.2000000"), std::string::npos) << first_row;
+  EXPECT_NE(read_file(tmp.file("d/gps.nmea")).find(",7812.0000"), std::string::npos);  // 78.2 deg = 78 deg 12'
+  const auto drawn = run_sinu({"simulate", "flight", "--out", tmp.file("e"), "--seed", "2", "--duration", "300"});
+  ASSERT_EQ(drawn.exit_code, 0) << drawn.err;
+  const std::string drawn_truth = read_file(tmp.file("e/truth.csv"));
+  EXPECT_EQ(drawn_truth.substr(0, drawn_truth.find(',', drawn_truth.find('\n'))),
+            truth.substr(0, truth.find(',', truth.find('\n'))))
+      << "the board clock's start is the seed's";
+  for (const char* bad : {"91,0,0", "0,181,0", "0,0,20000", "84,1"}) {
+    const auto u = run_sinu({"simulate", "flight", "--out", tmp.file("f"), "--seed", "2", "--site", bad});
+    EXPECT_EQ(u.exit_code, 2) << bad;
+    EXPECT_NE(u.err.find("--site"), std::string::npos) << bad << ": " << u.err;
+  }
+}
+
 TEST(SimulateCli, UsageErrorsExitTwo) {
   TempDir tmp;
   const std::string out = tmp.file("o");

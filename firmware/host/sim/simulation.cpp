@@ -23,6 +23,9 @@ namespace sinu::sim {
 namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+// Past this the local-level (NED) frame turns too fast about the pole for a flight's steps.
+constexpr double kMaxSiteLat_deg = 85.0;
 constexpr double kMaxImuRate_hz = 1000.0, kMaxGpsRate_hz = 20.0;
 constexpr double kMaxDuration_s = 48.0 * 3600.0;
 
@@ -94,6 +97,13 @@ bool validate_options(const SimOptions& o, std::string& why) {
   const double duration = session_duration_s(o);
   if (!(duration >= min_duration && duration <= kMaxDuration_s))
     return why = fmt::format("duration {} s is outside {}..{} s", duration, min_duration, kMaxDuration_s), false;
+  if (o.site_lat_lon_h) {
+    const auto& [lat, lon, h] = *o.site_lat_lon_h;
+    if (!(std::abs(lat) <= kMaxSiteLat_deg && std::abs(lon) <= 180.0 && h >= -500.0 && h <= 9000.0))
+      return why = fmt::format("--site {},{},{}: latitude must be within +-{} deg, longitude +-180 deg, ground "
+                               "height -500..9000 m", lat, lon, h, kMaxSiteLat_deg),
+             false;
+  }
   if (o.positions != 1) {
     if (o.mode == SimMode::Flight) return why = "--positions is for static sessions", false;
     if (o.positions < calibration::kFaces || o.positions > calibration::kMaxPositions)
@@ -128,7 +138,12 @@ bool run_simulation(const SimOptions& options, SimResult& result, dataset::Diagn
   Rng traj_rng(o.seed, RngStream::Trajectory), param_rng(o.seed, RngStream::ImuErrorParameters);
   Rng noise_rng(o.seed, RngStream::ImuNoise), env_rng(o.seed, RngStream::Environment);
   const ImuErrorModel model = o.error_model ? *o.error_model : draw_default_imu_error_model(param_rng);
-  const Site site = draw_site(traj_rng);
+  Site site = draw_site(traj_rng);
+  if (o.site_lat_lon_h) {
+    site.lat_rad = (*o.site_lat_lon_h)[0] * kDegToRad;
+    site.lon_rad = (*o.site_lat_lon_h)[1] * kDegToRad;
+    site.ground_h_m = (*o.site_lat_lon_h)[2];
+  }
   // Board clock at the first sample: not zero (dataset-format.md), whole milliseconds.
   const double t0 = std::round(traj_rng.uniform(100.0, 5000.0) * 1000.0) / 1000.0;
   const TemperatureProfile temp = flight ? draw_flight_temperature(env_rng) : draw_bench_temperature(env_rng);

@@ -2,6 +2,7 @@
 // sinu simulate: a flight (imu.csv, gps.nmea, truth.csv, meta.json) or a
 // static bench session (imu.csv, meta.json) in the dataset folder format,
 // and the hidden truth (error-model parameters, effects) as JSON elsewhere.
+#include <array>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -36,6 +37,9 @@ struct SimOptions {
   /// Replaces the drawn default model (tests: ideal_imu_error_model()).
   std::optional<ImuErrorModel> error_model;
   GpsErrorModel gps;
+  /// Replaces the drawn site's latitude, longitude [deg] and ground height [m]
+  /// (high latitudes, the date line); the rest of the draw is unchanged.
+  std::optional<std::array<double, 3>> site_lat_lon_h;
   /// Internal trajectory rate is at least this [Hz] (a multiple of the IMU rate).
   double min_internal_rate_hz = 800.0;
 };
