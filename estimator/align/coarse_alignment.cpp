@@ -108,6 +108,7 @@ bool CoarseAlignment::add_gnss(const GnssObservation& fix, double t_now, Alignme
     const Eigen::Vector3d m_level = r.q_level * r.mean_mag_b_uT;
     double declination = 0.0, sigma = 0.0;
     if (declination_for(m_level, z, declination, sigma, out)) {
+      sigma = std::max(sigma, field_heading_sigma(m_level, rest_tilt_sigma()));
       finish(z, t_now, declination - std::atan2(m_level.y(), m_level.x()), sigma, out);
       return true;
     }
@@ -173,7 +174,7 @@ void CoarseAlignment::record_field_check(const GnssObservation& z, AlignmentResu
   }
 }
 
-bool CoarseAlignment::mag_heading(const Eigen::Quaterniond& q_nb, const Eigen::Vector3d& mag_b_uT,
+bool CoarseAlignment::mag_heading(const Eigen::Quaterniond& q_nb, double tilt_sigma, const Eigen::Vector3d& mag_b_uT,
                                   const GnssObservation& z, double& heading, double& sigma, AlignmentResult& out) {
   // The field in the levelled (yaw 0) frame is Rz(-yaw) F_n, whose horizontal angle is declination - yaw.
   const double yaw = euler_from_quat(q_nb).z();
@@ -181,6 +182,7 @@ bool CoarseAlignment::mag_heading(const Eigen::Quaterniond& q_nb, const Eigen::V
   const Eigen::Vector3d m_level = q_level * mag_b_uT;
   double declination = 0.0;
   if (!declination_for(m_level, z, declination, sigma, out)) return false;
+  sigma = std::max(sigma, field_heading_sigma(m_level, tilt_sigma));
   heading = declination - std::atan2(m_level.y(), m_level.x());
   return true;
 }
@@ -198,7 +200,7 @@ bool CoarseAlignment::align_in_motion(const GnssObservation& z, double t_now, Al
     return true;
   }
   double heading = 0.0, sigma = 0.0;
-  if (cfg_.use_mag && have_mag_ && mag_heading(s.q_nb, last_mag_b_uT_, z, heading, sigma, out)) {
+  if (cfg_.use_mag && have_mag_ && mag_heading(s.q_nb, s.att_sigma_rad.head<2>().maxCoeff(), last_mag_b_uT_, z, heading, sigma, out)) {
     finish_in_motion(z, t_now, s, heading, sigma, out);
     return true;
   }
@@ -231,6 +233,17 @@ void CoarseAlignment::finish_in_motion(const GnssObservation& z, double t_now, c
   status_ = AlignStatus::Aligned;
 }
 
+double CoarseAlignment::rest_tilt_sigma() const {
+  // The levelling's own noise plus what the gyros added since the rest.
+  const double carried = rest_.estimate().mean_rate_sigma_rad_s * carried_s_;
+  return std::sqrt(2e-3 * 2e-3 + carried * carried);
+}
+
+double CoarseAlignment::field_heading_sigma(const Eigen::Vector3d& m_level, double tilt_sigma) const {
+  const double field_error_uT = std::hypot(cfg_.mag_residual_field_uT, std::abs(m_level.z()) * tilt_sigma);
+  return std::atan2(field_error_uT, m_level.head<2>().norm());
+}
+
 void CoarseAlignment::finish(const GnssObservation& z, double t_now, double turn, double yaw_sigma,
                              AlignmentResult& out) {
   const RestEstimate& r = rest_.estimate();
@@ -242,9 +255,7 @@ void CoarseAlignment::finish(const GnssObservation& z, double t_now, double turn
   out.rest_specific_force_sigma_m_s2 = r.specific_force_sigma_m_s2;
   out.gyro_bias_sigma_rad_s = r.mean_rate_sigma_rad_s;
   out.gyro_bias_rad_s = r.mean_rate_b_rad_s - q_rest.conjugate() * wgs84::omega_ie_n(z.lat_rad);
-  // Tilt: the levelling's own noise plus what the gyros added since the rest.
-  const double carried = r.mean_rate_sigma_rad_s * carried_s_;
-  const double tilt = std::sqrt(2e-3 * 2e-3 + carried * carried);
+  const double tilt = rest_tilt_sigma();
   out.att_sigma_rad = {tilt, tilt, yaw_sigma};
   // Levelled at rest and aligned on the next fix, or at the course speed a few s later.
   out.vel_sigma_m_s = Eigen::Vector3d::Constant(std::max(0.5, z.sigma_vel_m_s));
