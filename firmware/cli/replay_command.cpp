@@ -54,7 +54,11 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
                   num(c.velocity_resets).c_str(), num(c.vertical_resets).c_str(), num(c.yaw_resets).c_str());
       break;
     case replay::HealthStatus::NotAligned:
-      if (r.gnss.used == 0)
+      if (r.gnss.used == 0 && r.gnss.without_height > 0)
+        std::printf("  NOT ALIGNED: no navigation solution (the %s GNSS fixes have no height: RMC or GLL without a GGA "
+                    "sentence; the INS needs a 3-D fix to start from and to hold its vertical channel)\n",
+                    num(r.gnss.without_height).c_str());
+      else if (r.gnss.used == 0)
         std::printf("  NOT ALIGNED: no navigation solution (no GNSS position in the data: gps.nmea absent, empty or "
                     "without a fix; the INS needs one to start from)\n");
       else
@@ -92,6 +96,8 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
               num(c.rejected[pos]).c_str(), num(c.rejected[static_cast<std::size_t>(est::AidingSource::GnssVelocity)]).c_str(),
               num(c.rejected[static_cast<std::size_t>(est::AidingSource::Magnetometer)]).c_str(),
               num(r.source.corrupt_sentences).c_str());
+  if (r.gnss.without_height > 0 && r.gnss.used > 0)
+    std::printf("  GNSS: %s fix(es) without a height (RMC or GLL, no GGA) not used\n", num(r.gnss.without_height).c_str());
   if (c.imu_clipped_samples > 0 || c.imu_gaps > 0 || c.imu_invalid > 0 || c.imu_non_increasing > 0 || c.gnss_timeouts > 0) {
     std::printf("  faults: IMU clipped %s samples, %s gaps (longest %s s), %s dropped (NaN %s, time %s); GNSS timeouts %s "
                 "(%s s dead reckoning)\n",
@@ -119,6 +125,13 @@ int run(ReplayCliOptions& c) {
     return kExitFailure;
   }
   if (!result.note.empty()) std::fprintf(stderr, "sinu replay: note: %s\n", result.note.c_str());
+  // Lost and reset have their warning as they happen; never aligning has none until now.
+  if (result.health() == replay::HealthStatus::NotAligned) {
+    std::fprintf(stderr, "sinu replay: warning: never aligned: no navigation solution (%s)\n",
+                 result.gnss.used > 0             ? "no rest period and no GNSS motion to align on"
+                 : result.gnss.without_height > 0 ? "the GNSS fixes have no height: no GGA sentence"
+                                                  : "no GNSS position in the data");
+  }
   if (!c.quiet) print_summary(opt, result);
   return kExitOk;
 }

@@ -107,5 +107,29 @@ TEST(PositionOnlyReceiver, TheRealDriveWithGgaAndGstOnlyDeadReckonsItsOutages) {
   EXPECT_LT(s["outage_max_drift_h_rms_m"].get<double>(), 1.5 * full["outage_max_drift_h_rms_m"].get<double>());
 }
 
+// The other way round: RMC (and VTG, GST) but no GGA, so no fix has a height.
+// The INS needs a 3-D fix to start from and to hold its vertical channel; it
+// said "gps.nmea absent, empty or without a fix" of 6000 good horizontal
+// fixes. Now it says what is missing, counts them and warns on stderr.
+TEST(PositionOnlyReceiver, FixesWithoutAHeightAreNamedNotCalledMissing) {
+  TempDir dir;
+  const std::string flight = dir.file("flight");
+  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", flight, "--seed", "13", "--duration", "300"}).exit_code, 0);
+  std::size_t rmc = 0;
+  copy_dataset_editing_gps(flight, dir.file("rmc"), [&](std::string& line) {
+    if (line.find("RMC,") != std::string::npos && line.find("*") != std::string::npos) ++rmc;
+    return line.find("GGA,") == std::string::npos;
+  });
+  const auto r = run_sinu({"replay", "--in", dir.file("rmc"), "--out", dir.file("r")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("have no height"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("warning: never aligned"), std::string::npos) << r.err;
+  const auto s = read_json(dir.file("r") + "/summary.json");
+  EXPECT_FALSE(s["aligned"].get<bool>());
+  // One per epoch with a valid RMC (a corrupted RMC loses its epoch's fix).
+  EXPECT_GT(s["gnss"]["without_height"].get<double>(), 0.95 * static_cast<double>(rmc));
+  EXPECT_LE(s["gnss"]["without_height"].get<double>(), static_cast<double>(rmc));
+}
+
 }  // namespace
 }  // namespace sinu::test

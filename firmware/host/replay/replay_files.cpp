@@ -131,7 +131,10 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
   }
   sj["rejected"] = rejected;
   sj["accepted"] = accepted;
-  sj["gnss"] = {{"epochs", r.gnss.epochs}, {"used", r.gnss.used}, {"dropped_outage", r.gnss.dropped_outage},
+  sj["gnss"] = {{"epochs", r.gnss.epochs},
+                {"used", r.gnss.used},
+                {"without_height", r.gnss.without_height},
+                {"dropped_outage", r.gnss.dropped_outage},
                 {"dropped_period", r.gnss.dropped_period}, {"late", c.gnss_late}, {"overflow", c.gnss_overflow}};
   sj["corrupt_sentences"] = r.source.corrupt_sentences;
   sj["imu"] = {{"incomplete_rows", r.source.incomplete_rows}, {"time_anomalies", r.source.time_anomalies},

@@ -34,6 +34,7 @@ struct Excitation {
 
 struct GnssFeedCounters {
   std::uint64_t epochs = 0, used = 0, dropped_outage = 0, dropped_period = 0;
+  std::uint64_t without_height = 0;  // a horizontal fix with no height (RMC or GLL without GGA): not used
 };
 
 /// What carried the unit: as configured, and with `auto` what the detector found.
