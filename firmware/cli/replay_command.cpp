@@ -54,15 +54,9 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
                   num(c.velocity_resets).c_str(), num(c.vertical_resets).c_str(), num(c.yaw_resets).c_str());
       break;
     case replay::HealthStatus::NotAligned:
-      if (r.gnss.used == 0 && r.gnss.without_height > 0)
-        std::printf("  NOT ALIGNED: no navigation solution (the %s GNSS fixes have no height: RMC or GLL without a GGA "
-                    "sentence; the INS needs a 3-D fix to start from and to hold its vertical channel)\n",
-                    num(r.gnss.without_height).c_str());
-      else if (r.gnss.used == 0)
-        std::printf("  NOT ALIGNED: no navigation solution (no GNSS position in the data: gps.nmea absent, empty or "
-                    "without a fix; the INS needs one to start from)\n");
-      else
-        std::printf("  NOT ALIGNED: no navigation solution (no rest period and no GNSS motion to align on)\n");
+      std::printf("  NOT ALIGNED: no navigation solution (%s)\n", r.not_aligned_reason());
+      if (r.gnss.without_height > 0 && r.gnss.used == 0)
+        std::printf("  %s GNSS fixes without a height\n", num(r.gnss.without_height).c_str());
       break;
     case replay::HealthStatus::Ok: break;
   }
@@ -128,9 +122,7 @@ int run(ReplayCliOptions& c) {
   // Lost and reset have their warning as they happen; never aligning has none until now.
   if (result.health() == replay::HealthStatus::NotAligned) {
     std::fprintf(stderr, "sinu replay: warning: never aligned: no navigation solution (%s)\n",
-                 result.gnss.used > 0             ? "no rest period and no GNSS motion to align on"
-                 : result.gnss.without_height > 0 ? "the GNSS fixes have no height: no GGA sentence"
-                                                  : "no GNSS position in the data");
+                 result.not_aligned_reason());
   }
   if (!c.quiet) print_summary(opt, result);
   return kExitOk;

@@ -122,13 +122,19 @@ TEST(PositionOnlyReceiver, FixesWithoutAHeightAreNamedNotCalledMissing) {
   });
   const auto r = run_sinu({"replay", "--in", dir.file("rmc"), "--out", dir.file("r")});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("have no height"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("have no height: RMC or GLL without a GGA"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("warning: never aligned"), std::string::npos) << r.err;
   const auto s = read_json(dir.file("r") + "/summary.json");
   EXPECT_FALSE(s["aligned"].get<bool>());
   // One per epoch with a valid RMC (a corrupted RMC loses its epoch's fix).
   EXPECT_GT(s["gnss"]["without_height"].get<double>(), 0.95 * static_cast<double>(rmc));
   EXPECT_LE(s["gnss"]["without_height"].get<double>(), static_cast<double>(rmc));
+  // diagnose printed "no candidate effect explains the misfit" of the empty
+  // replay: a verdict on nothing. Now it fails and says why.
+  const auto d = run_sinu({"diagnose", "--in", dir.file("rmc"), "--out", dir.file("d")});
+  EXPECT_EQ(d.exit_code, 1) << d.out;
+  EXPECT_NE(d.err.find("nothing to diagnose: the replay never aligned"), std::string::npos) << d.err;
+  EXPECT_EQ(d.out.find("no candidate effect"), std::string::npos) << d.out;
 }
 
 }  // namespace

@@ -48,6 +48,12 @@ bool replay_and_score(replay::ReplayOptions opt, est::EffectSet effects, const s
   const bool ok = files_dir.empty() ? replay::run_replay(opt, used, result, error, false)
                                     : replay::replay_to_folder(opt, files_dir, 10.0, result, error, used, false);
   if (!ok) return false;
+  // No solution has no innovations: a report of "nothing missing" would look like a verdict.
+  if (!result.aligned) {
+    error = std::string("nothing to diagnose: the replay never aligned, no navigation solution (") +
+            result.not_aligned_reason() + ")";
+    return false;
+  }
   out.stats = stats.stats();
   out.series = series.take();
   out.rmse_pos_h_m = or_minus_one(result.rmse_pos_h_m());

@@ -42,6 +42,13 @@ HealthStatus ReplayResult::health() const {
   return HealthStatus::Ok;
 }
 
+const char* ReplayResult::not_aligned_reason() const {
+  if (aligned) return "";
+  if (gnss.used > 0) return "no rest period and no GNSS motion to align on";
+  if (gnss.without_height > 0) return "the GNSS fixes have no height: RMC or GLL without a GGA sentence";
+  return "no GNSS position in the data: gps.nmea absent, empty or without a fix; the INS needs one to start from";
+}
+
 double ReplayResult::rmse_pos_h_m() const { return rms(metrics.sum_h2, metrics.compared); }
 double ReplayResult::rmse_pos_v_m() const { return rms(metrics.sum_v2, metrics.compared); }
 double ReplayResult::rmse_vel_m_s() const { return rms(metrics.sum_vel2, metrics.compared_vel); }

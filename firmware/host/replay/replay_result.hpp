@@ -74,6 +74,8 @@ struct ReplayResult {
   std::string note;               // what the user must know ("" if nothing): truncated recording, dropped rows
 
   HealthStatus health() const;
+  /// Why nothing aligned, in a few words ("" when it did).
+  const char* not_aligned_reason() const;
   /// RMSE against truth; NaN without truth points.
   double rmse_pos_h_m() const;
   double rmse_pos_v_m() const;
