@@ -37,6 +37,8 @@ bool NavUnit::init(const NavUnitConfig& c, est::NavObserver* observer, std::stri
   AccelCorrection accel;
   if (!c.calib_path.empty() && !load_accel_correction(c.calib_path, accel, error)) return false;
   cfg.noise.scale_coloured(c.process_noise_scale);
+  cfg.noise.accel_bias_walk *= c.accel_bias_walk_scale;
+  cfg.noise.gyro_bias_walk *= c.gyro_bias_walk_scale;
   if (c.denoise != "auto" && !parse_denoiser(c.denoise, denoiser_, error)) return false;
   prefilter_.reset();
   if (denoiser_.wavelet) {

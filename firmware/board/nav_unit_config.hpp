@@ -31,6 +31,8 @@ struct NavUnitConfig {
   double gate_sigma = 5.0;
   GnssSigmaConfig sigma;
   double process_noise_scale = 1.0;  // times the sensor model's coloured-error variances
+  // Times the bias states' random-walk densities (diagnose asks: did a bias move more than calibrated?).
+  double accel_bias_walk_scale = 1.0, gyro_bias_walk_scale = 1.0;
   double mag_sigma_uT = 1.0;         // magnetometer noise + disturbance, 1 sigma per axis
   // Learn the GNSS velocity and magnetometer noise from the innovations,
   // starting from the sigmas above (a sigma the user gives is kept fixed).

@@ -47,6 +47,15 @@ void NavigationCliOptions::add_to(CLI::App& sub) {
                  "without GST a factor is otherwise learnt from the innovations")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  for (const bool gyro : {false, true}) {
+    sub.add_option(gyro ? "--gyro-bias-walk-scale" : "--accel-bias-walk-scale",
+                   gyro ? opt.unit.gyro_bias_walk_scale : opt.unit.accel_bias_walk_scale,
+                   std::string("The ") + (gyro ? "gyro" : "accelerometer") +
+                       " bias states' random walk (calib.json's) times this: for a bias that moved in flight "
+                       "(diagnose says when and by how much)")
+        ->capture_default_str()
+        ->check(CLI::PositiveNumber);
+  }
   sub.add_option("--mag-sigma", opt.unit.mag_sigma_uT,
                  "Magnetometer noise per axis, 1 sigma [uT]; given: kept fixed, else learnt from the innovations")
       ->capture_default_str()

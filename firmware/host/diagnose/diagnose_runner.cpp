@@ -25,6 +25,8 @@ struct RunScore {
   double rmse_pos_h_m = -1.0, rmse_att_deg = -1.0;
   double outage_drift_h_m = -1.0;  // RMS of the largest horizontal drift per outage (-1: none scored)
   InnovationSeries series;         // with keep_series only
+  SolutionHealth health;
+  double duration_s = 0.0;
   std::vector<replay::EffectEstimate> effects;
   replay::Excitation excitation;
 };
@@ -55,12 +57,47 @@ bool replay_and_score(replay::ReplayOptions opt, est::EffectSet effects, const s
     return false;
   }
   out.stats = stats.stats();
+  out.health = {result.health(), result.counters.resets(), result.counters.lost_total_s};
+  out.duration_s = result.duration_s;
   out.series = series.take();
   out.rmse_pos_h_m = or_minus_one(result.rmse_pos_h_m());
   out.rmse_att_deg = or_minus_one(result.rmse_att_deg());
   out.outage_drift_h_m = or_minus_one(result.outage_drift_rms_m());
   out.effects = result.effects;
   out.excitation = result.excitation;
+  return true;
+}
+
+// The baseline with each bias's random walk scaled up: a bias that shifted in
+// flight shows as a likelihood gain no effect matches (a 0.5-deg/s gyro step
+// +460 on a 20-min flight, a 0.3-m/s^2 accelerometer step +1000-2000). On the
+// evaluation's 140 simulated flights the calibrated walk was right (clean
+// flights: every scale loses) or the gain stayed below 222 where an effect
+// was left half-explained: the threshold, 15 per minute of flight (300 for 20
+// min), sits above that.
+constexpr double kWalkScales[] = {3.0, 10.0, 30.0};
+constexpr double kWalkGainPerMinute = 15.0, kMinWalkGain = 50.0;
+
+bool test_bias_walks(const replay::ReplayOptions& opt, const est::EffectSet& model, const RunScore& baseline,
+                     BiasWalkFinding& out, RunScore& best, std::string& error) {
+  if (opt.unit.calib_path.empty()) return true;  // the built-in model's walks are guesses, not a claim
+  out.tested = true;
+  out.threshold = std::max(kMinWalkGain, kWalkGainPerMinute * baseline.duration_s / 60.0);
+  out.nll_gain = -1e300;
+  for (const bool gyro : {false, true}) {
+    for (const double scale : kWalkScales) {
+      replay::ReplayOptions trial = opt;
+      (gyro ? trial.unit.gyro_bias_walk_scale : trial.unit.accel_bias_walk_scale) = scale;
+      RunScore score;
+      if (!replay_and_score(trial, model, "", false, score, error)) return false;
+      const double gain = baseline.stats.total_nll() - score.stats.total_nll();
+      if (gain <= out.nll_gain) continue;
+      out.nll_gain = gain;
+      out.gyro = gyro;
+      out.scale = scale;
+      best = std::move(score);
+    }
+  }
   return true;
 }
 
@@ -280,11 +317,14 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     }
   }
   out.baseline_innovations = std::move(current.series);
+  RunScore walk_score;
+  if (!test_bias_walks(tuned.replay, model, current, out.bias_walk, walk_score, error)) return false;
   for (int r = 0; r < o.rounds; ++r) {
     Round round;
     round.model = model;
     round.relearnt = tuned.replay.unit.relearn;
     round.stats = current.stats;
+    round.health = current.health;
     round.rmse_pos_h_m = current.rmse_pos_h_m;
     round.rmse_att_deg = current.rmse_att_deg;
     round.outage_drift_h_m = current.outage_drift_h_m;
@@ -368,6 +408,18 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     for (std::size_t i : order) sorted.push_back(round.candidates[i]);
     round.candidates = sorted;
     round.found = !round.candidates.empty() && round.candidates.front().explains(o.min_significance);
+    // A bias that moved explains the baseline's misfit better than any effect:
+    // name no effect for it (a step is no property of the unit), follow it with the wider walk.
+    BiasWalkFinding& walk = out.bias_walk;
+    if (r == 0 && walk.tested) {
+      walk.best_effect_gain = round.candidates.empty() ? 0.0 : std::max(0.0, round.candidates.front().nll_gain);
+      walk.named = walk.nll_gain > walk.threshold && walk.nll_gain > 2.0 * walk.best_effect_gain;
+    }
+    if (r == 0 && walk.named) {
+      round.found = false;
+      (walk.gyro ? tuned.replay.unit.gyro_bias_walk_scale : tuned.replay.unit.accel_bias_walk_scale) = walk.scale;
+      current = std::move(walk_score);
+    }
     if (round.found) {
       const CandidateResult& best = round.candidates.front();
       if (best.changed) {
@@ -392,10 +444,11 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
   last.model = model;
   last.relearnt = tuned.replay.unit.relearn;
   last.stats = current.stats;
+  last.health = current.health;
   last.rmse_pos_h_m = current.rmse_pos_h_m;
   last.rmse_att_deg = current.rmse_att_deg;
   last.outage_drift_h_m = current.outage_drift_h_m;
-  if (out.rounds.empty() || out.rounds.back().found) out.rounds.push_back(last);
+  if (out.rounds.empty() || out.rounds.back().found || out.bias_walk.named) out.rounds.push_back(last);
   if (!given.replay.outages.empty() && !outage_drifts(tuned.replay, given.replay.outages, out, error)) return false;
   if (!o.apply_path.empty()) {
     // The final model's effects beyond the defaults, with the final run's

@@ -67,14 +67,36 @@ struct CandidateResult {
   }
 };
 
+/// How the solution of one replay fared (the replay's health, resets, time lost).
+struct SolutionHealth {
+  replay::HealthStatus status = replay::HealthStatus::Ok;
+  std::uint64_t resets = 0;
+  double lost_s = 0.0;
+};
+
 struct Round {
   est::EffectSet model;             // the effects in the model this round starts from
+  SolutionHealth health;            // its replay's
   est::EffectSet relearnt;          // model-file effects in it learnt again from their prior (found changed)
   InnovationStats stats;            // its score
   double rmse_pos_h_m = -1.0, rmse_att_deg = -1.0;
   double outage_drift_h_m = -1.0;   // RMS of the largest horizontal drift per --outage window (-1: none)
   std::vector<CandidateResult> candidates;  // best first
   bool found = false;               // candidates.front() explains the data
+};
+
+/// A bias that moved more than the calibration's random walk allows (a shift
+/// in flight: a shock, a temperature step; or another unit than the one
+/// calibrated). Not an effect: the baseline replayed with one sensor's
+/// bias walk scaled, against the candidates' likelihood gains.
+struct BiasWalkFinding {
+  bool tested = false;     // a calib.json gave the walks
+  bool gyro = false;       // the best trial's sensor (else the accelerometer)
+  double scale = 1.0;      // its walk scale
+  double nll_gain = 0.0;   // its log-likelihood gain over the baseline
+  double threshold = 0.0;  // the gain it must exceed (scaled with the flight's length)
+  double best_effect_gain = 0.0;  // the first round's best candidate's gain
+  bool named = false;      // beyond the threshold and twice the best effect's gain
 };
 
 struct Diagnosis {
@@ -86,7 +108,8 @@ struct Diagnosis {
   std::vector<Round> rounds;
   std::vector<est::Effect> missing;  // in the order found
   std::vector<est::Effect> changed;  // model-file effects this flight says have changed
-  bool model_changed() const { return !missing.empty() || !changed.empty(); }
+  BiasWalkFinding bias_walk;
+  bool model_changed() const { return !missing.empty() || !changed.empty() || bias_walk.named; }
   struct Skipped {
     est::Effect effect{};
     std::string reason;  // why the data cannot test it

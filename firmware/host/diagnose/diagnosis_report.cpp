@@ -12,6 +12,7 @@ namespace sinu::diagnose {
 namespace {
 
 std::string fmt(const char* f, double v) { return format_number(f, v); }
+constexpr const char* kWalkScalesText = "3, 10 and 30";  // diagnose_runner.cpp kWalkScales
 
 }  // namespace
 
@@ -22,7 +23,9 @@ std::string diagnosis_summary(const DiagnoseOptions& o, const Diagnosis& d) {
   for (const std::string& n : tuned_noise_findings(d)) out += "  noise: " + n + "\n";
   if (const std::string p = process_noise_text(d); !p.empty()) out += "  " + p + "\n";
   out += "  baseline model (" + effect_list(base.model) + "): fits worst in " + worst_cell(base.stats) + "\n";
-  if (!d.model_changed()) {
+  if (const std::string h = health_text(base.health); !h.empty()) out += "  baseline solution " + h + "\n";
+  if (d.bias_walk.named) out += "  bias moved: " + bias_walk_text(d.bias_walk) + "\n";
+  else if (!d.model_changed()) {
     out += "  no candidate effect explains the misfit (see report.md for each candidate's score)\n";
   }
   for (const Round& round : d.rounds) {
@@ -37,6 +40,8 @@ std::string diagnosis_summary(const DiagnoseOptions& o, const Diagnosis& d) {
   const Round& last = d.rounds.back();
   if (d.model_changed()) {
     out += "  error before -> after: " + before_after_text(base, last) + "\n";
+    const std::string h = health_text(last.health);
+    if (h != health_text(base.health)) out += "  final model's solution " + (h.empty() ? "healthy" : h) + "\n";
   }
   if (!d.model_file.empty())
     out += "  applied: " + d.model_file + " (start the next flight from it: --model-file, or navigation.model_file)\n";
@@ -59,6 +64,8 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
     const Round& base = d.rounds.front();
     md << "## Where the baseline model fails\n\nModel: " << effect_list(base.model) << ". Horizontal RMSE against truth: "
        << rmse_text(base.rmse_pos_h_m, "m") << ", attitude " << rmse_text(base.rmse_att_deg, "deg") << ".\n\n";
+    if (const std::string h = health_text(base.health); !h.empty())
+      md << "**The baseline's solution was " << h << "**: the misfit broke it.\n\n";
     md << "| source | components | NIS per component | mean innovation [sigma] | rejected |\n|---|---|---|---|---|\n";
     for (std::size_t k = 0; k < kSources; ++k) {
       const ComponentStats& c = base.stats.source[k];
@@ -125,6 +132,13 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
   }
   j["weakly_observable"] = d.observability;
   j["noise_findings"] = d.noise_findings;
+  if (d.bias_walk.tested) {
+    md << "## Did a bias move?\n\nThe baseline replayed with each sensor's bias random walk " << kWalkScalesText
+       << " times calib.json's: " << bias_walk_text(d.bias_walk) << ".\n\n";
+    j["bias_walk"] = {{"sensor", d.bias_walk.gyro ? "gyro" : "accel"}, {"scale", d.bias_walk.scale},
+                      {"nll_gain", d.bias_walk.nll_gain},  {"threshold", d.bias_walk.threshold},
+                      {"best_effect_gain", d.bias_walk.best_effect_gain}, {"named", d.bias_walk.named}};
+  }
   md << "## Conclusion\n\n```\n" << diagnosis_summary(o, d) << "```\n";
   if (!d.model_changed()) {
     md << "\nNo effect the EKF can estimate explains the misfit. What the vocabulary does not cover: a\n"
@@ -139,9 +153,13 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
         if (r.stats.source[k].count) w[kSourceNames[k]] = r.stats.source[k].lag1();
       return w;
     };
-    j["before"] = {{"rmse_pos_h_m", d.rounds.front().rmse_pos_h_m}, {"nll", d.rounds.front().stats.total_nll()},
+    j["before"] = {{"rmse_pos_h_m", d.rounds.front().rmse_pos_h_m},
+                   {"rmse_att_deg", d.rounds.front().rmse_att_deg},
+                   {"nll", d.rounds.front().stats.total_nll()},
                    {"outage_drift_h_m", d.rounds.front().outage_drift_h_m}, {"lag1", whiteness(d.rounds.front())}};
-    j["after"] = {{"rmse_pos_h_m", d.rounds.back().rmse_pos_h_m}, {"nll", d.rounds.back().stats.total_nll()},
+    j["after"] = {{"rmse_pos_h_m", d.rounds.back().rmse_pos_h_m},
+                  {"rmse_att_deg", d.rounds.back().rmse_att_deg},
+                  {"nll", d.rounds.back().stats.total_nll()},
                   {"outage_drift_h_m", d.rounds.back().outage_drift_h_m}, {"lag1", whiteness(d.rounds.back())},
                   {"effects", effect_list(d.rounds.back().model)}};
   }

@@ -1,5 +1,7 @@
 #include "firmware/host/diagnose/diagnosis_text.hpp"
 
+#include <fmt/format.h>
+
 #include <cstdio>
 
 namespace sinu::diagnose {
@@ -168,6 +170,33 @@ std::vector<std::string> implausible_fits(const Diagnosis& d, double min_signifi
   return out;
 }
 
+std::string bias_walk_text(const BiasWalkFinding& w) {
+  if (!w.tested) return "";
+  const char* sensor = w.gyro ? "gyro" : "accelerometer";
+  if (!w.named)
+    return fmt::format("the calibrated bias walks fit: the best, the {}'s {:g}x, changes the innovations' "
+                       "log-likelihood by {:+.1f} (threshold {:.1f})",
+                       sensor, w.scale, w.nll_gain, w.threshold);
+  return fmt::format("the {} bias moved more than calib.json's random walk allows: {:g}x its walk raises the "
+                     "innovations' log-likelihood by +{:.1f} (threshold {:.1f}, the best effect +{:.1f}). A bias "
+                     "that shifted in flight (a shock, a temperature step) or another unit than the one calibrated; "
+                     "no effect is named for it. Replay with --{}-bias-walk-scale {:g} to follow it",
+                     sensor, w.scale, w.nll_gain, w.threshold, w.best_effect_gain, w.gyro ? "gyro" : "accel", w.scale);
+}
+
+std::string health_text(const SolutionHealth& h) {
+  switch (h.status) {
+    case replay::HealthStatus::Ok: return "";
+    case replay::HealthStatus::Reset: return "reset to GNSS " + std::to_string(h.resets) + " time(s)";
+    case replay::HealthStatus::LostAndRecovered:
+      return "lost for " + format_number("%.1f", h.lost_s) + " s, recovered by " + std::to_string(h.resets) +
+             " reset(s)";
+    case replay::HealthStatus::Lost: return "LOST at the end of the data (" + format_number("%.1f", h.lost_s) + " s)";
+    case replay::HealthStatus::NotAligned: return "never aligned";
+  }
+  return "";
+}
+
 std::string before_after_text(const Round& before, const Round& after) {
   std::string out = "horizontal RMSE " + rmse_text(before.rmse_pos_h_m, "m") + " -> " +
                     rmse_text(after.rmse_pos_h_m, "m") + ", attitude " + rmse_text(before.rmse_att_deg, "deg") + " -> " +
@@ -196,6 +225,12 @@ std::string conclusion_sentence(const Diagnosis& d) {
     if (!round.found) continue;
     if (!found.empty()) found += "; ";
     found += missing_effect_text(round.candidates.front());
+  }
+  if (d.bias_walk.named) {
+    return fmt::format("The {} bias moved during the flight, more than its calibrated walk allows (no effect of the "
+                       "vocabulary explains it as well). Error before -> after, its walk {:g}x: {}.",
+                       d.bias_walk.gyro ? "gyro" : "accelerometer", d.bias_walk.scale,
+                       before_after_text(d.rounds.front(), d.rounds.back()));
   }
   if (!found.empty()) {
     const char* what = d.missing.empty() ? "Changed: " : d.missing.size() > 1 ? "Missing effects: " : "Missing effect: ";

@@ -48,6 +48,12 @@ std::string missing_effect_text(const CandidateResult& c);
 std::string implausible_fit_text(const CandidateResult& c);
 /// implausible_fit_text of every such candidate, each effect once (the first round it appeared in).
 std::vector<std::string> implausible_fits(const Diagnosis& d, double min_significance);
+/// A bias that moved more than its calibrated walk (named or not: "" when not tested):
+/// the sensor, the walk scale, the likelihood gain against its threshold and the best effect's.
+std::string bias_walk_text(const BiasWalkFinding& w);
+/// "" for a solution that stayed healthy; else "LOST at the end of the data (120 s)", "reset to
+/// GNSS 3 time(s)", ...: a misfit that broke the solution, said before any figure of it.
+std::string health_text(const SolutionHealth& h);
 /// "horizontal RMSE 2.1 m -> 0.9 m, attitude ...; NIS per component gnss_position 1.3 -> 1.0 ...".
 std::string before_after_text(const Round& before, const Round& after);
 
