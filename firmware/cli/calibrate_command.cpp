@@ -90,6 +90,11 @@ int run_calibrate(const CalibrateOptions& o) {
     // models from its longest still segment (the multi-position fit below).
     still.push_back(calibration::find_still_parts(session, run.sessions.size()));
     const calibration::SessionStillParts& parts = still.back();
+    if (const std::string moved = calibration::motion_in_session(session, parts.noise_begin, parts.noise_end);
+        !moved.empty()) {
+      std::fprintf(stderr, "sinu calibrate: %s: %s\n", in.c_str(), moved.c_str());
+      return kExitFailure;
+    }
     if (!parts.whole) session = calibration::slice_session(session, parts.noise_begin, parts.noise_end);
     calibration::ProgressBar fitting("fitting " + in, static_cast<double>(calibration::kImuAxes.size()),
                                !o.quiet && session.duration_s > kLongSession_s);

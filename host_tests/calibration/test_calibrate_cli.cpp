@@ -206,4 +206,23 @@ TEST(CalibrateCli, TooShortSessionAndBadOptionsAreRefused) {
   EXPECT_EQ(r.exit_code, 2);
 }
 
+// A flight given to calibrate by mistake (the folder names look alike): its
+// turns and climbs were fitted as sensor noise, and calib.json claimed a
+// unit hundreds of times noisier than it is, silently. Now it is refused,
+// naming the axis and its span; the bench session of the same seed passes.
+TEST(CalibrateCli, AFlightIsRefusedAsABenchSession) {
+  TempDir dir;
+  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", dir.file("flight"), "--seed", "4", "--duration", "600"}).exit_code,
+            0);
+  auto r = run_sinu({"calibrate", "--in", dir.file("flight"), "--out", dir.file("c.json"), "--quiet"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("the unit moved; calibrate needs a bench session held still"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(dir.file("flight")), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("c.json")));
+  ASSERT_EQ(run_sinu({"simulate", "static", "--out", dir.file("bench"), "--seed", "4", "--duration", "600"}).exit_code,
+            0);
+  r = run_sinu({"calibrate", "--in", dir.file("bench"), "--out", dir.file("c.json"), "--quiet"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
 }  // namespace

@@ -1,5 +1,8 @@
 #include "firmware/host/calibration/static_session.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 
 #include "firmware/host/dataset/dataset_paths.hpp"
@@ -11,7 +14,42 @@ namespace {
 constexpr std::size_t kMinRows = 1000;      // below this no AR(10)/Allan fit means anything
 constexpr double kGapFactor = 1.5;          // an interval this many dt long lost a sample
 constexpr std::size_t kProgressEvery = 100000;
+// A bench session's 1st-99th percentile span per axis is a few sigma of
+// noise: 0.01 rad/s and 0.06-0.08 m/s^2 for the simulator's consumer MEMS at
+// 40 Hz. A flight spans tenths of rad/s and m/s^2 and more (a simulated
+// flight 0.37 rad/s and 2.4 m/s^2, the real quadcopter 2.3 rad/s and 5.9
+// m/s^2, the real car 1.0 rad/s and 5.9 m/s^2): 10x a bench's noise, 0.1
+// rad/s (5.7 deg/s) and 1 m/s^2, is motion, and leaves room for a noisier
+// unit or a faster rate.
+constexpr double kMaxStillRateSpan_rad_s = 0.1, kMaxStillForceSpan_m_s2 = 1.0;
+
+/// The 1st to 99th percentile span of x[begin, end).
+double percentile_span(const std::vector<double>& x, std::size_t begin, std::size_t end) {
+  std::vector<double> v(x.begin() + static_cast<std::ptrdiff_t>(begin), x.begin() + static_cast<std::ptrdiff_t>(end));
+  if (v.size() < 100) return 0.0;
+  const auto at = [&](double q) {
+    auto it = v.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
+    std::nth_element(v.begin(), it, v.end());
+    return *it;
+  };
+  const double lo = at(0.01);
+  return at(0.99) - lo;
+}
 }  // namespace
+
+std::string motion_in_session(const StaticSession& s, std::size_t begin, std::size_t end) {
+  for (std::size_t k = 0; k < kImuAxes.size(); ++k) {
+    const bool gyro = k >= 3;
+    const double span = percentile_span(s.imu[k], begin, std::min(end, s.imu[k].size()));
+    const double limit = gyro ? kMaxStillRateSpan_rad_s : kMaxStillForceSpan_m_s2;
+    if (span > limit)
+      return fmt::format("{} spans {:.3g} {} (1st to 99th percentile) where a unit at rest spans a few times its noise "
+                         "(limit {:g}): the unit moved; calibrate needs a bench session held still (or in several "
+                         "held attitudes), not a flight",
+                         kImuAxes[k], span, gyro ? "rad/s" : "m/s^2", limit);
+  }
+  return "";
+}
 
 bool load_static_session(const std::string& dataset, StaticSession& out, dataset::Diagnostic& err,
                          const std::function<void(std::size_t)>& on_rows) {

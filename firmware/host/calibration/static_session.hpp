@@ -34,4 +34,9 @@ struct StaticSession {
 bool load_static_session(const std::string& dataset, StaticSession& out, dataset::Diagnostic& err,
                          const std::function<void(std::size_t)>& on_rows = {});
 
+/// Why the samples [begin, end) of a session (the part the noise models are
+/// fitted on) are no bench data: a rate or a specific force that moved far
+/// beyond any sensor noise (a flight given by mistake); "" when it held still.
+std::string motion_in_session(const StaticSession& session, std::size_t begin, std::size_t end);
+
 }  // namespace sinu::calibration
