@@ -122,7 +122,8 @@ def evaluate(sinu, work, seed, k, names, t0_s, flight):
          "--apply", "--out", diag])
     dj = json.load(open(os.path.join(diag, "diagnosis.json")))
     named = dj.get("missing_effects", [])
-    row = {"seed": seed, "k": k, "hidden": names, "named": named}
+    row = {"seed": seed, "k": k, "hidden": names, "named": named,
+           "bias_moved": bool(dj.get("bias_walk", {}).get("named", False))}
     if k >= 1:
         base = {"calib": calib}
         row["drift_baseline"] = outage_drift(sinu, flight, truth, t0_s, diag + "_r0", base)
@@ -232,6 +233,9 @@ def main():
         falsely = collections.Counter(r["named"][0] for r in clean if r["named"])
         out += ["", f"Clean flights: adequate (nothing named) in {ok} of {len(clean)} ({100 * ok / len(clean):.0f} %)"
                 + (f"; named instead: {', '.join(f'{n} x{c}' for n, c in falsely.most_common())}" if falsely else "") + "."]
+    moved = collections.Counter("clean" if r["k"] == 0 else "+".join(r["hidden"]) for r in rows if r.get("bias_moved"))
+    out += ["", "A moved bias (none was simulated) named in "
+            + (", ".join(f"{c} `{n}`" for n, c in moved.most_common()) + " flight(s)." if moved else "no flight.")]
     applied = [r for r in one if r.get("drift_applied") and r.get("drift_true_model")]
     if applied:
         within = sum(r["drift_applied"] <= 1.15 * r["drift_true_model"] for r in applied)
