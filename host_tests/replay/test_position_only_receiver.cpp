@@ -120,6 +120,8 @@ TEST(PositionOnlyReceiver, FixesWithoutAHeightAreNamedNotCalledMissing) {
     if (line.find("RMC,") != std::string::npos && line.find("*") != std::string::npos) ++rmc;
     return line.find("GGA,") == std::string::npos;
   });
+  const auto insp = run_sinu({"inspect", "dataset", dir.file("rmc")});
+  EXPECT_NE(insp.out.find("without a height (no GGA"), std::string::npos) << insp.out;
   const auto r = run_sinu({"replay", "--in", dir.file("rmc"), "--out", dir.file("r")});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("have no height: RMC or GLL without a GGA"), std::string::npos) << r.out;

@@ -42,6 +42,7 @@ bool read_gps(const std::string& path, GpsSummary& s, Diagnostic& err) {
     if (fix.has_position()) {
       s.fixes.add(fix.arrival_s);
       s.fixes_with_sigma += fix.has_gst;
+      s.fixes_without_height += !fix.ellipsoid_height_m().has_value();
     }
   }
   s.fixes.finish();
@@ -118,6 +119,8 @@ std::string format_summary(const DatasetSummary& s) {
                      g.sentences.bad_framing, g.sentences.malformed_field, g.skipped_lines);
     o += fmt::format("            {} epochs, {} with a position fix ({} with GST sigmas)", g.epochs, g.fixes.count(),
                      g.fixes_with_sigma);
+    if (g.fixes_without_height)
+      o += fmt::format("; {} without a height (no GGA: replay cannot start from them)", g.fixes_without_height);
     if (g.late_sentences) o += fmt::format("; {} late or repeated-time sentences dropped", g.late_sentences);
     o += "\n";
     if (g.fixes.count() > 0) o += rate_line("fixes", g.fixes, "fixes");
@@ -164,6 +167,7 @@ std::string format_summary_json(const DatasetSummary& s) {
                 {"epochs", g.epochs},
                 {"fixes", rate_json(g.fixes)},
                 {"fixes_with_sigma", g.fixes_with_sigma},
+                {"fixes_without_height", g.fixes_without_height},
                 {"late_sentences", g.late_sentences}};
   }
   if (s.truth) j["truth"] = {{"time", rate_json(s.truth->time)}, {"attitude_rows", s.truth->attitude_rows}};

@@ -24,6 +24,7 @@ struct GpsSummary {
   std::uint64_t epochs = 0;
   RateTracker fixes;  // epochs with a usable position
   std::uint64_t fixes_with_sigma = 0;
+  std::uint64_t fixes_without_height = 0;  // no GGA altitude: replay cannot use them
   std::uint64_t late_sentences = 0;  // after their epoch was emitted, or a repeated epoch time
   Diagnostic first_corrupt;  // empty message if none
 };
