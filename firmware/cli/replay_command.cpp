@@ -91,7 +91,8 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
               num(c.rejected[static_cast<std::size_t>(est::AidingSource::Magnetometer)]).c_str(),
               num(r.source.corrupt_sentences).c_str());
   if (r.gnss.without_height > 0 && r.gnss.used > 0)
-    std::printf("  GNSS: %s fix(es) without a height (RMC or GLL, no GGA) not used\n", num(r.gnss.without_height).c_str());
+    std::printf("  GNSS: %s epoch(s) with a position but no height (their GGA missing or corrupt) not used\n",
+                num(r.gnss.without_height).c_str());
   if (c.imu_clipped_samples > 0 || c.imu_gaps > 0 || c.imu_invalid > 0 || c.imu_non_increasing > 0 || c.gnss_timeouts > 0) {
     std::printf("  faults: IMU clipped %s samples, %s gaps (longest %s s), %s dropped (NaN %s, time %s); GNSS timeouts %s "
                 "(%s s dead reckoning)\n",
