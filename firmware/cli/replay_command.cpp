@@ -37,21 +37,29 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
   const replay::NavMetrics& m = r.metrics;
   std::printf("replay %s  model %s  states %d  aligned %s\n", r.dataset.c_str(),
               opt.unit.calib.kind == est::NoiseModelKind::GaussMarkov ? "gm" : "ar", r.states, r.aligned ? "yes" : "NO");
-  // A solution that was lost or reset says so before any figure.
+  // A solution that was lost or reset says so before any figure, and where to look for why.
+  const auto why = [&] {
+    std::printf("  why: sinu diagnose --in %s%s%s --out DIR, with the same options (a missing effect, a bias that "
+                "moved, a noise level)\n",
+                opt.in_dir.c_str(), opt.unit.calib_path.empty() ? "" : " --calib ", opt.unit.calib_path.c_str());
+  };
   switch (r.health()) {
     case replay::HealthStatus::Lost:
       std::printf("  SOLUTION LOST at the end of the data (lost %s s from t=%s): the figures below are not a navigation "
                   "result\n", num(c.lost_total_s).c_str(), num(c.first_lost_t_s).c_str());
+      why();
       break;
     case replay::HealthStatus::LostAndRecovered:
       std::printf("  SOLUTION WAS LOST for %s s (from t=%s) and recovered by %s reset(s)\n", num(c.lost_total_s).c_str(),
                   num(c.first_lost_t_s).c_str(), num(c.resets()).c_str());
+      why();
       break;
     case replay::HealthStatus::Reset:
       std::printf("  solution RESET to GNSS %s time(s) (first at t=%s; position %s, velocity %s of which vertical %s, "
                   "yaw %s)\n",
                   num(c.resets()).c_str(), num(c.first_reset_t_s).c_str(), num(c.position_resets).c_str(),
                   num(c.velocity_resets).c_str(), num(c.vertical_resets).c_str(), num(c.yaw_resets).c_str());
+      why();
       break;
     case replay::HealthStatus::NotAligned:
       std::printf("  NOT ALIGNED: no navigation solution (%s)\n", r.not_aligned_reason());

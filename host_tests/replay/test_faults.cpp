@@ -195,6 +195,20 @@ TEST_F(Faults, AnAccelerometerBiasShiftAlongGravityIsCaughtByTheHeights) {
   expect_recovered("accelerometer z bias +0.5 m/s^2 (from then on)", o, start, start);
 }
 
+// The printed summary of a replay that had to reset: the reset before any
+// figure, then where to look for why (the diagnose command for this data).
+TEST_F(Faults, AResetIsPrintedBeforeAnyFigureWithTheDiagnoseCommand) {
+  const std::string ds = file("reset_print");
+  inject_faults(file("flight"), ds, {ImuBiasShift{t0_ + kFaultAt, 3, 0.5}});
+  const auto r = run_sinu({"replay", "--in", ds, "--calib", file("calib.json"), "--out", ds + "_out"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::size_t reset = r.out.find("solution RESET to GNSS"), rmse = r.out.find("rmse:");
+  ASSERT_NE(reset, std::string::npos) << r.out;
+  EXPECT_LT(reset, rmse) << r.out;
+  EXPECT_NE(r.out.find("why: sinu diagnose --in " + ds + " --calib " + file("calib.json")), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("warning: "), std::string::npos) << r.err;
+}
+
 // The gyro's bias about the vertical shifts by 2 deg/s in cruise (a knock, a
 // temperature step; the calibrated walk allows ~0.01 deg/s). The heading turns
 // at that rate and the magnetometer's innovations grow on one side: before the
