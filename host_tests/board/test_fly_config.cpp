@@ -52,7 +52,7 @@ TEST(FlyConfig, ShippedFileShowsEveryKey) {
   const toml::table file = toml::parse_file(kShipped);
   const std::string text = sinu::test::read_file(kShipped);
   const auto keys = sinu::board::fly_config_keys();
-  EXPECT_EQ(keys.size(), 43u);  // 9 imu, 5 gps, 9 navigation, 11 mavlink, 5 nmea, 2 log, 2 recording
+  EXPECT_EQ(keys.size(), 45u);  // 9 imu, 5 gps, 11 navigation, 11 mavlink, 5 nmea, 2 log, 2 recording
   for (const auto& k : keys) {
     SCOPED_TRACE(k.path);
     if (k.has_default) {
@@ -90,6 +90,7 @@ TEST(FlyConfig, PartialFileKeepsTheOtherDefaults) {
   const Loaded l = load(
       "[gps]\nbaud = 115200\n\n[outputs.nmea]\nenabled = true\ndevice = \"/dev/ttyAMA2\"\ntalker = \"GN\"\n"
       "[navigation]\neffects = [\"accel_scale\"]\nwithout_effects = [\"none\"]\nmag_declination_deg = -3.5\n"
+      "gyro_bias_walk_scale = 10\n"
       "[imu]\nrate_hz = 100.5\naddress = 0x68\n");
   ASSERT_TRUE(l.ok) << l.error;
   FlyConfig want;
@@ -100,6 +101,7 @@ TEST(FlyConfig, PartialFileKeepsTheOtherDefaults) {
   want.navigation.effects = {"accel_scale"};
   want.navigation.without_effects = {"none"};
   want.navigation.mag_declination_deg = -3.5;
+  want.navigation.gyro_bias_walk_scale = 10.0;
   want.imu.rate_hz = 100.5;
   want.imu.address = 0x68;
   EXPECT_TRUE(l.config == want);
