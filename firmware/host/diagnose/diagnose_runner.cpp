@@ -319,7 +319,8 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
   out.baseline_innovations = std::move(current.series);
   RunScore walk_score;
   if (!test_bias_walks(tuned.replay, model, current, out.bias_walk, walk_score, error)) return false;
-  for (int r = 0; r < o.rounds; ++r) {
+  // A moved bias takes the first round; the effects then get their rounds from the widened walk.
+  for (int r = 0; r < o.rounds + (out.bias_walk.named ? 1 : 0); ++r) {
     Round round;
     round.model = model;
     round.relearnt = tuned.replay.unit.relearn;
@@ -415,7 +416,8 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
       walk.best_effect_gain = round.candidates.empty() ? 0.0 : std::max(0.0, round.candidates.front().nll_gain);
       walk.named = walk.nll_gain > walk.threshold && walk.nll_gain > 2.0 * walk.best_effect_gain;
     }
-    if (r == 0 && walk.named) {
+    const bool walk_round = r == 0 && walk.named;
+    if (walk_round) {
       round.found = false;
       (walk.gyro ? tuned.replay.unit.gyro_bias_walk_scale : tuned.replay.unit.accel_bias_walk_scale) = walk.scale;
       current = std::move(walk_score);
@@ -432,7 +434,7 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
       current = std::move(scores[order.front()]);
     }
     out.rounds.push_back(std::move(round));
-    if (!out.rounds.back().found) break;
+    if (!out.rounds.back().found && !walk_round) break;
   }
   out.noise_findings = noise_findings(current.stats, out.model_changed());
   // Candidates the last round could not pin down: say so, and what would.

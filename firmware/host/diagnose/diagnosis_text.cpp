@@ -228,9 +228,9 @@ std::string conclusion_sentence(const Diagnosis& d) {
   }
   if (d.bias_walk.named) {
     return fmt::format("The {} bias moved during the flight, more than its calibrated walk allows (no effect of the "
-                       "vocabulary explains it as well). Error before -> after, its walk {:g}x: {}.",
-                       d.bias_walk.gyro ? "gyro" : "accelerometer", d.bias_walk.scale,
-                       before_after_text(d.rounds.front(), d.rounds.back()));
+                       "vocabulary explains it as well){}. Error before -> after, its walk {:g}x{}: {}.",
+                       d.bias_walk.gyro ? "gyro" : "accelerometer", found.empty() ? "" : "; with its walk widened, " + found,
+                       d.bias_walk.scale, found.empty() ? "" : " and the effects", before_after_text(d.rounds.front(), d.rounds.back()));
   }
   if (!found.empty()) {
     const char* what = d.missing.empty() ? "Changed: " : d.missing.size() > 1 ? "Missing effects: " : "Missing effect: ";
