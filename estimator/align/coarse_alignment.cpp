@@ -200,7 +200,8 @@ bool CoarseAlignment::align_in_motion(const GnssObservation& z, double t_now, Al
     return true;
   }
   double heading = 0.0, sigma = 0.0;
-  if (cfg_.use_mag && have_mag_ && mag_heading(s.q_nb, s.att_sigma_rad.head<2>().maxCoeff(), last_mag_b_uT_, z, heading, sigma, out)) {
+  const double tilt_sigma = s.att_sigma_rad.head<2>().maxCoeff();
+  if (cfg_.use_mag && have_mag_ && mag_heading(s.q_nb, tilt_sigma, last_mag_b_uT_, z, heading, sigma, out)) {
     finish_in_motion(z, t_now, s, heading, sigma, out);
     return true;
   }

@@ -56,7 +56,7 @@ struct AlignmentConfig {
   double mag_declination_rad = 0.0;        // east of true north positive (used when known)
   double mag_heading_sigma_rad = 0.05;     // with the declination: its model error, residual hard iron
   // The field's error behind a magnetic heading: hard iron left after calibration, a local anomaly. The
-  // heading error it makes is this over the horizontal field: 2 deg at 30 uT, 17 deg at 3 uT near a
+  // heading error it makes is this over the horizontal field: 2 deg at 30 uT, 18 deg at 3 uT near a
   // magnetic pole, where mag_heading_sigma_rad alone would claim too much.
   double mag_residual_field_uT = 1.0;
   double mag_unknown_declination_sigma_rad = 0.35;  // without it: |declination| < 20 deg at most sites

@@ -25,8 +25,9 @@ constexpr double kMaxStillRateSpan_rad_s = 0.1, kMaxStillForceSpan_m_s2 = 1.0;
 
 /// The 1st to 99th percentile span of x[begin, end).
 double percentile_span(const std::vector<double>& x, std::size_t begin, std::size_t end) {
+  end = std::min(end, x.size());
+  if (end < begin + 100) return 0.0;  // too few samples to call anything motion
   std::vector<double> v(x.begin() + static_cast<std::ptrdiff_t>(begin), x.begin() + static_cast<std::ptrdiff_t>(end));
-  if (v.size() < 100) return 0.0;
   const auto at = [&](double q) {
     auto it = v.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
     std::nth_element(v.begin(), it, v.end());
@@ -40,7 +41,7 @@ double percentile_span(const std::vector<double>& x, std::size_t begin, std::siz
 std::string motion_in_session(const StaticSession& s, std::size_t begin, std::size_t end) {
   for (std::size_t k = 0; k < kImuAxes.size(); ++k) {
     const bool gyro = k >= 3;
-    const double span = percentile_span(s.imu[k], begin, std::min(end, s.imu[k].size()));
+    const double span = percentile_span(s.imu[k], begin, end);
     const double limit = gyro ? kMaxStillRateSpan_rad_s : kMaxStillForceSpan_m_s2;
     if (span > limit)
       return fmt::format("{} spans {:.3g} {} (1st to 99th percentile) where a unit at rest spans a few times its noise "
