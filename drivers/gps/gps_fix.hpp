@@ -38,6 +38,8 @@ struct GpsFix {
     auto not_measured = [](char mode) { return mode == 'E' || mode == 'N'; };
     return (has_gga && quality == kGgaEstimated) || not_measured(rmc_mode) || not_measured(vtg_mode);
   }
+  /// A position without a height (RMC or GLL, no GGA): the INS cannot start from it.
+  bool horizontal_only() const { return has_position() && !alt_msl_m; }
   /// WGS-84 ellipsoidal height = altitude above MSL + geoid separation.
   std::optional<double> ellipsoid_height_m() const {
     if (!alt_msl_m) return std::nullopt;

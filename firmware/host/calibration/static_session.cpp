@@ -7,6 +7,7 @@
 
 #include "firmware/host/dataset/dataset_paths.hpp"
 #include "firmware/host/dataset/imu_csv.hpp"
+#include "firmware/host/dataset/quantile.hpp"
 
 namespace sinu::calibration {
 
@@ -27,14 +28,8 @@ constexpr double kMaxStillRateSpan_rad_s = 0.1, kMaxStillForceSpan_m_s2 = 1.0;
 double percentile_span(const std::vector<double>& x, std::size_t begin, std::size_t end) {
   end = std::min(end, x.size());
   if (end < begin + 100) return 0.0;  // too few samples to call anything motion
-  std::vector<double> v(x.begin() + static_cast<std::ptrdiff_t>(begin), x.begin() + static_cast<std::ptrdiff_t>(end));
-  const auto at = [&](double q) {
-    auto it = v.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
-    std::nth_element(v.begin(), it, v.end());
-    return *it;
-  };
-  const double lo = at(0.01);
-  return at(0.99) - lo;
+  const std::vector<double> v(x.begin() + static_cast<std::ptrdiff_t>(begin), x.begin() + static_cast<std::ptrdiff_t>(end));
+  return dataset::quantile(v, 0.99) - dataset::quantile(v, 0.01);
 }
 }  // namespace
 

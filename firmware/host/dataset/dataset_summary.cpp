@@ -42,7 +42,7 @@ bool read_gps(const std::string& path, GpsSummary& s, Diagnostic& err) {
     if (fix.has_position()) {
       s.fixes.add(fix.arrival_s);
       s.fixes_with_sigma += fix.has_gst;
-      s.fixes_without_height += !fix.ellipsoid_height_m().has_value();
+      s.fixes_without_height += fix.horizontal_only();
     }
   }
   s.fixes.finish();

@@ -78,6 +78,10 @@ bool replay_and_score(replay::ReplayOptions opt, est::EffectSet effects, const s
 constexpr double kWalkScales[] = {3.0, 10.0, 30.0};
 constexpr double kWalkGainPerMinute = 15.0, kMinWalkGain = 50.0;
 
+double& bias_walk_scale(replay::ReplayOptions& opt, bool gyro) {
+  return gyro ? opt.unit.gyro_bias_walk_scale : opt.unit.accel_bias_walk_scale;
+}
+
 bool test_bias_walks(const replay::ReplayOptions& opt, const est::EffectSet& model, const RunScore& baseline,
                      BiasWalkFinding& out, RunScore& best, std::string& error) {
   if (opt.unit.calib_path.empty()) return true;  // the built-in model's walks are guesses, not a claim
@@ -87,7 +91,7 @@ bool test_bias_walks(const replay::ReplayOptions& opt, const est::EffectSet& mod
   for (const bool gyro : {false, true}) {
     for (const double scale : kWalkScales) {
       replay::ReplayOptions trial = opt;
-      (gyro ? trial.unit.gyro_bias_walk_scale : trial.unit.accel_bias_walk_scale) = scale;
+      bias_walk_scale(trial, gyro) = scale;
       RunScore score;
       if (!replay_and_score(trial, model, "", false, score, error)) return false;
       const double gain = baseline.stats.total_nll() - score.stats.total_nll();
@@ -419,7 +423,7 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     const bool walk_round = r == 0 && walk.named;
     if (walk_round) {
       round.found = false;
-      (walk.gyro ? tuned.replay.unit.gyro_bias_walk_scale : tuned.replay.unit.accel_bias_walk_scale) = walk.scale;
+      bias_walk_scale(tuned.replay, walk.gyro) = walk.scale;
       current = std::move(walk_score);
     }
     if (round.found) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "firmware/host/dataset/quantile.hpp"
 #include "firmware/host/diagnose/diagnosis_text.hpp"
 #include "firmware/host/diagnose/svg_plot.hpp"
 
@@ -117,20 +118,13 @@ std::string phase_legend() {
 
 // ---- the innovations over time --------------------------------------------
 
-double quantile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  const auto k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1));
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-  return v[k];
-}
-
 // The value range of a plot: the innovations up to their 99.5th percentile (a
 // few outliers drawn at the edge) and at least 3.5 sigma.
 double value_range(const std::vector<svg::Sample>& innovation, const std::vector<svg::Sample>& sigma) {
   std::vector<double> size, s;
   for (const svg::Sample& x : innovation) size.push_back(std::abs(x.y));
   for (const svg::Sample& x : sigma) s.push_back(x.y);
-  const double r = std::max(quantile(size, 0.995), 3.5 * quantile(s, 0.5));
+  const double r = std::max(dataset::quantile(size, 0.995), 3.5 * dataset::quantile(s, 0.5));
   return r > 0.0 ? 1.1 * r : 1.0;
 }
 
@@ -138,7 +132,7 @@ double value_range(const std::vector<svg::Sample>& innovation, const std::vector
 double gap_threshold_s(const std::vector<svg::Sample>& samples, double span_s) {
   std::vector<double> dt;
   for (std::size_t i = 1; i < samples.size(); ++i) dt.push_back(samples[i].t_s - samples[i - 1].t_s);
-  return std::max(5.0 * quantile(dt, 0.5), 2.0 * span_s / kInnovationColumns);
+  return std::max(5.0 * dataset::quantile(dt, 0.5), 2.0 * span_s / kInnovationColumns);
 }
 
 struct ComponentSeries {

@@ -129,7 +129,7 @@ class UnitFeed final : public ReplayFeed {
 
   void on_fix(const drivers::GpsFix& f) override {
     ++gnss.epochs;
-    if (f.has_position() && !f.ellipsoid_height_m()) ++gnss.without_height;
+    if (f.horizontal_only()) ++gnss.without_height;
     est::GnssObservation z;
     if (!unit_.observation(f, z)) return;
     const double t_valid = unit_.validity_time(z.arrival_s);
