@@ -39,7 +39,7 @@ enum : std::uint32_t {
   kStill = 1u << 20,          // state: standing still (IMU quiet, GNSS speed ~0): zero-velocity updates
   kNonholonomicFused = 1u << 21,
   kVehicleChanged = 1u << 22,  // vehicle auto: the ground-vehicle constraints were switched on or off
-  kGyroBiasReleased = 1u << 23,  // the magnetometer's misfit stayed on one side: the gyro bias about the vertical widened
+  kGyroBiasReleased = 1u << 23,  // the gyro bias about the vertical widened (the magnetometer's misfit on one side, a yaw reset)
 };
 }  // namespace nav_flag
 
@@ -63,7 +63,7 @@ struct NavCounters {
   std::uint64_t position_resets = 0, velocity_resets = 0, yaw_resets = 0;
   std::uint64_t vertical_resets = 0;     // of velocity_resets: vd to the GNSS heights' rate (vertical_check.hpp)
   std::uint64_t mag_reanchors = 0;       // hard iron re-anchored after a disturbance
-  std::uint64_t gyro_bias_releases = 0;  // gyro bias about the vertical widened by the heading check
+  std::uint64_t gyro_bias_releases = 0;  // gyro bias about the vertical widened: the heading check, a yaw reset
   std::uint64_t position_inflations = 0;  // position widened by a small misfit, the epoch fused again
   std::uint64_t gnss_timeouts = 0;       // times the GNSS position stopped for gnss_timeout_s
   double gnss_timeout_total_s = 0.0;     // time spent dead reckoning

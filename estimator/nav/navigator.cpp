@@ -459,8 +459,13 @@ void Navigator::check_heading(double t_meas) {
     return;
   }
   if (!heading_.push(t_meas, misfit, sigma)) return;
-  // The gyro bias about the vertical has shifted: let it move.
   predict_.flush(filter_);
+  release_gyro_bias_about_vertical();
+}
+
+void Navigator::release_gyro_bias_about_vertical() {
+  const StateLayout& L = filter_.layout();
+  if (!L.has(Effect::GyroBias)) return;
   const Eigen::Vector3d down_b = nav_.C_nb().row(2).transpose();
   const double w = cfg_.heading_bias_widen_rad_s;
   filter_.add_block_noise(L.of(Effect::GyroBias), w * w * down_b * down_b.transpose());
@@ -484,6 +489,10 @@ void Navigator::recover(RecoveryAction action, const GnssObservation& z, double 
       filter_.reset_yaw(nav_, dyaw, 0.3);
       ++counters_.yaw_resets;
       events_ |= nav_flag::kYawReset;
+      // A heading lost by this much is a gyro bias about the vertical that
+      // moved beyond its walk (nothing else turns the INS away from the
+      // ground track): let it move, as the heading check does.
+      release_gyro_bias_about_vertical();
     }
   }
   if (action == RecoveryAction::ResetPosition) {

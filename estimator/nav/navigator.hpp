@@ -236,6 +236,8 @@ class Navigator {
   /// The last field update's misfit to the heading check; widens the gyro bias
   /// about the vertical when the misfit is the filter's.
   void check_heading(double t_meas);
+  /// Widens the gyro bias about the vertical by heading_bias_widen_rad_s (P at now).
+  void release_gyro_bias_about_vertical();
   /// The GNSS course's rate (moving, a fix within 1 s), else the INS heading's [rad/s].
   double turn_rate_rad_s(double t_s) const;
   void learn_position_scale(double t_meas);

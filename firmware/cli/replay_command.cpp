@@ -109,8 +109,8 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
                 num(c.imu_non_increasing).c_str(), num(c.gnss_timeouts).c_str(), num(c.gnss_timeout_total_s).c_str());
   }
   if (c.gyro_bias_releases > 0 || c.mag_reanchors > 0) {
-    std::printf("  the magnetometer's misfit: gyro bias about the vertical released %s time(s) (heading check), hard "
-                "iron re-anchored %s time(s)\n",
+    std::printf("  heading misfit: gyro bias about the vertical released %s time(s) (the magnetometer's heading check "
+                "or a yaw reset), hard iron re-anchored %s time(s)\n",
                 num(c.gyro_bias_releases).c_str(), num(c.mag_reanchors).c_str());
   }
 }
