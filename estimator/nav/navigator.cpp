@@ -44,6 +44,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   gnss_.clear();
   screen_.configure(cfg.screen);
   alignment_.configure(cfg.alignment);
+  scale_check_.configure(cfg.scale_check);
   alignment_result_ = {};
   recovery_.configure(cfg.recovery);
   vertical_.configure(cfg.vertical);
@@ -250,13 +251,16 @@ void Navigator::process(const ImuSample& s) {
 }
 
 void Navigator::align(const ImuSample& s, double dt) {
+  if (scale_check_.verdict().accel_refused) return;  // the data's units are wrong throughout
   alignment_.add_imu(s, dt);
+  scale_check_.add_specific_force(s.specific_force_b_m_s2.norm());
   AlignmentResult res;
   const double latency = filter_.gps_latency_s();
   while (!gnss_.empty() && gnss_.front().arrival_s - latency <= s.t_s) {
     const GnssObservation z = gnss_.front();
     gnss_.pop();
     if (!alignment_.add_gnss(z, s.t_s, res)) continue;
+    if (!scale_check_.accel_plausible(wgs84::normal_gravity_m_s2(res.nav.lat_rad, res.nav.h_m))) return;
     alignment_result_ = res;
     nav_ = res.nav;
     filter_.seed_attitude(res.att_sigma_rad);
@@ -523,6 +527,7 @@ void Navigator::fuse_magnetometer(const ImuSample& s) {
   if (!cfg_.use_mag || !s.has_mag || !s.mag_b_uT.allFinite()) return;
   last_mag_sample_t_s_ = s.t_s;
   if (!mag_started_) {  // the first field sample switches the reserved states on
+    if (!scale_check_.field_plausible(s.mag_b_uT.norm(), alignment_result_.model_field_n_uT.norm())) return;
     predict_.flush(filter_);
     filter_.activate_deferred();
     const bool hard_iron_given = filter_.tuning().prior[static_cast<std::size_t>(Effect::MagHardIron)].given;

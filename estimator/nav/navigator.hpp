@@ -29,6 +29,7 @@
 #include "estimator/nav/gnss_recovery.hpp"
 #include "estimator/nav/heading_check.hpp"
 #include "estimator/nav/imu_screen.hpp"
+#include "estimator/nav/sensor_scale_check.hpp"
 #include "estimator/nav/nav_health.hpp"
 #include "estimator/nav/noise_adapter.hpp"
 #include "estimator/nav/stillness.hpp"
@@ -69,6 +70,7 @@ struct NavigatorConfig {
   double heading_check_max_turn_rad_s = 0.052;  // 3 deg/s: judged on straight legs
   double course_min_speed_m_s = 3.0;            // the GNSS course's rate from this speed on
   ImuScreenConfig screen;            // full scales: clipping
+  SensorScaleCheckConfig scale_check;  // units: gravity and the Earth field as references
   // The delayed horizon: at least this, and it grows with the latency
   // estimate (latency + horizon_margin_s, up to max_horizon_s and what the IMU
   // buffer holds), so a receiver slower than assumed is still fused at its
@@ -188,7 +190,7 @@ class Navigator {
   /// End of data: process everything still buffered.
   void flush();
 
-  bool aligned() const { return alignment_.status() == AlignStatus::Aligned; }
+  bool aligned() const { return alignment_.status() == AlignStatus::Aligned && !scale_check_.verdict().accel_refused; }
   AlignStatus alignment_status() const { return alignment_.status(); }
   const NavState& nav() const { return nav_; }
   const ErrorStateFilter& filter() const { return filter_; }
@@ -201,6 +203,8 @@ class Navigator {
   const VehicleDetector& vehicle_detector() const { return vehicle_; }
   /// How the alignment went (valid once aligned): the heading's source, the declination used.
   const AlignmentResult& alignment_result() const { return alignment_result_; }
+  /// Whether the accelerometer and magnetometer read in the assumed units (sensor_scale_check.hpp).
+  const SensorScaleVerdict& scale_verdict() const { return scale_check_.verdict(); }
   const NavigatorConfig& config() const { return cfg_; }
   /// The noise sigmas in use now (learnt, or as configured).
   double gnss_velocity_sigma_m_s() const { return vel_noise_.sigma(); }
@@ -252,6 +256,7 @@ class Navigator {
   RingBuffer<ImuSample, kImuBufferCapacity> imu_;
   RingBuffer<GnssObservation, kGnssBufferCapacity> gnss_;
   CoarseAlignment alignment_;
+  SensorScaleCheck scale_check_;
   AlignmentResult alignment_result_;
   ErrorStateFilter filter_;
   GnssRecovery recovery_;

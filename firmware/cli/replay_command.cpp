@@ -62,7 +62,7 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
       why();
       break;
     case replay::HealthStatus::NotAligned:
-      std::printf("  NOT ALIGNED: no navigation solution (%s)\n", r.not_aligned_reason());
+      std::printf("  NOT ALIGNED: no navigation solution (%s)\n", r.not_aligned_reason().c_str());
       if (r.gnss.without_height > 0 && r.gnss.used == 0)
         std::printf("  %s GNSS fixes without a height\n", num(r.gnss.without_height).c_str());
       break;
@@ -98,6 +98,8 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
               num(c.rejected[pos]).c_str(), num(c.rejected[static_cast<std::size_t>(est::AidingSource::GnssVelocity)]).c_str(),
               num(c.rejected[static_cast<std::size_t>(est::AidingSource::Magnetometer)]).c_str(),
               num(r.source.corrupt_sentences).c_str());
+  if (const std::string why_no_mag = r.mag_refused_reason(); !why_no_mag.empty())
+    std::printf("  magnetometer NOT USED: %s\n", why_no_mag.c_str());
   if (r.gnss.without_height > 0 && r.gnss.used > 0)
     std::printf("  GNSS: %s epoch(s) with a position but no height (their GGA missing or corrupt) not used\n",
                 num(r.gnss.without_height).c_str());
@@ -131,8 +133,10 @@ int run(ReplayCliOptions& c) {
   // Lost and reset have their warning as they happen; never aligning has none until now.
   if (result.health() == replay::HealthStatus::NotAligned) {
     std::fprintf(stderr, "sinu replay: warning: never aligned: no navigation solution (%s)\n",
-                 result.not_aligned_reason());
+                 result.not_aligned_reason().c_str());
   }
+  if (const std::string why_no_mag = result.mag_refused_reason(); !why_no_mag.empty())
+    std::fprintf(stderr, "sinu replay: warning: magnetometer not used: %s\n", why_no_mag.c_str());
   if (!c.quiet) print_summary(opt, result);
   return kExitOk;
 }

@@ -105,6 +105,12 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
                        {"field_over_model", num(a.field_ratio)},
                        {"dip_minus_model_deg", num(a.dip_difference_rad * kDeg)}};
   }
+  // The units check (estimator/nav/sensor_scale_check.hpp): null where nothing was judged.
+  sj["sensor_units"] = {{"specific_force_over_gravity", num(r.scale.specific_force_over_gravity)},
+                        {"accel_refused", r.scale.accel_refused},
+                        {"field_over_model", num(r.scale.field_over_model)},
+                        {"mag_refused_samples", r.scale.mag_refused_samples},
+                        {"mag_refused", r.mag_refused_reason()}};
   sj["rmse"] = {{"pos_h_m", num(r.rmse_pos_h_m())}, {"pos_v_m", num(r.rmse_pos_v_m())}, {"vel_m_s", num(r.rmse_vel_m_s())},
                 {"att_deg", num(r.rmse_att_deg())}, {"truth_points", m.compared}};
   json outs = json::array();

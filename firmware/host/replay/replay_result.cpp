@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
+
 namespace sinu::replay {
 
 void Excitation::add(const est::ImuSample& s) {
@@ -42,11 +44,25 @@ HealthStatus ReplayResult::health() const {
   return HealthStatus::Ok;
 }
 
-const char* ReplayResult::not_aligned_reason() const {
+std::string ReplayResult::not_aligned_reason() const {
   if (aligned) return "";
+  if (scale.accel_refused) {
+    return fmt::format("the accelerometer reads {:.3g} m/s^2 of specific force on average where gravity is {:.4g} "
+                       "m/s^2 ({:.3g}x): imu.csv's ax, ay, az must be m/s^2 (in g they read 0.1x)",
+                       scale.mean_specific_force_m_s2, scale.gravity_m_s2, scale.specific_force_over_gravity);
+  }
   if (gnss.used > 0) return "no rest period and no GNSS motion to align on";
   if (gnss.without_height > 0) return "the GNSS fixes have no height: RMC or GLL without a GGA sentence";
   return "no GNSS position in the data: gps.nmea absent, empty or without a fix; the INS needs one to start from";
+}
+
+std::string ReplayResult::mag_refused_reason() const {
+  if (scale.mag_refused_samples == 0 || counters.accepted[static_cast<std::size_t>(est::AidingSource::Magnetometer)] +
+                                                counters.rejected[static_cast<std::size_t>(est::AidingSource::Magnetometer)] > 0)
+    return "";
+  return fmt::format("{} field samples read {:.3g}x the World Magnetic Model's {:.3g} uT here: imu.csv's mx, my, mz "
+                     "must be uT (mG read 10x, G 0.01x, nT 1000x)",
+                     scale.mag_refused_samples, scale.field_over_model, scale.model_field_uT);
 }
 
 double ReplayResult::rmse_pos_h_m() const { return rms(metrics.sum_h2, metrics.compared); }

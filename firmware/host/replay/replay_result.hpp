@@ -68,6 +68,7 @@ struct ReplayResult {
   GnssFeedCounters gnss;
   VehicleOutcome vehicle;
   est::AlignmentResult alignment;  // how the first solution came about (valid when aligned)
+  est::SensorScaleVerdict scale;   // the accelerometer and magnetometer against gravity and the Earth field
   SourceCounters source;
   double gnss_velocity_sigma_m_s = 0.0, mag_sigma_uT = 0.0;  // in use at the end (learnt or fixed)
   Eigen::Vector2d gnss_position_scale{1.0, 1.0};  // horizontal, vertical factor on unstated (no GST) sigmas
@@ -75,7 +76,9 @@ struct ReplayResult {
 
   HealthStatus health() const;
   /// Why nothing aligned, in a few words ("" when it did).
-  const char* not_aligned_reason() const;
+  std::string not_aligned_reason() const;
+  /// Why the magnetometer was never used although the data has one ("" when it was, or there is none).
+  std::string mag_refused_reason() const;
   /// RMSE against truth; NaN without truth points.
   double rmse_pos_h_m() const;
   double rmse_pos_v_m() const;

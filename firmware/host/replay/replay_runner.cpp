@@ -195,6 +195,7 @@ void collect(const board::NavUnit& unit, ReplayResult& r) {
   }
   r.aligned = nav.aligned();
   r.alignment = nav.alignment_result();
+  r.scale = nav.scale_verdict();
   r.counters = nav.counters();
   const est::VehicleDetector& vd = nav.vehicle_detector();
   r.vehicle = {nav.config().vehicle, nav.ground_vehicle(), vd.guess(), vd.decided_at_s(), vd.lateral_rms_m_s(),
