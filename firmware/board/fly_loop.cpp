@@ -124,7 +124,11 @@ std::size_t FlyLoop::health_line(const FlyHealth& h, char* buf, std::size_t size
   buf[0] = '\0';
   append(buf, size, n, "sinu fly: t=%.1f s", h.t_s);
   const NavSolution& s = solution_;
-  if (!unit_.navigator().aligned()) {
+  const est::SensorScaleVerdict& units = unit_.navigator().scale_verdict();
+  if (units.accel_refused) {
+    append(buf, size, n, " | NAV REFUSED: accelerometer reads %.3g g (not m/s^2? driver scale)",
+           units.specific_force_over_gravity);
+  } else if (!unit_.navigator().aligned()) {
     append(buf, size, n, " | NAV aligning");
   } else {
     const std::uint32_t fl = s.flags | flags_;
@@ -134,6 +138,11 @@ std::size_t FlyLoop::health_line(const FlyHealth& h, char* buf, std::size_t size
            std::sqrt(s.P_nav(8, 8)) * kRadToDeg);
     if (fl & (f::kPositionReset | f::kVelocityReset | f::kYawReset)) append(buf, size, n, ", RESET to GNSS");
     if (fl & f::kClipping) append(buf, size, n, ", IMU CLIPPING");
+    const est::NavCounters& c = unit_.navigator().counters();
+    const auto mag = static_cast<std::size_t>(est::AidingSource::Magnetometer);
+    if (units.mag_refused_samples > 0 && c.accepted[mag] + c.rejected[mag] == 0) {
+      append(buf, size, n, ", MAG NOT USED: reads %.3gx the Earth's field (not uT?)", units.field_over_model);
+    }
   }
   // IMU: unhealthy while samples are missing or transfers fail.
   const bool imu_bad = h.i2c_errors > 0 || h.since_imu_s < 0.0 || h.since_imu_s > 0.2;

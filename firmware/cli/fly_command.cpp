@@ -38,6 +38,12 @@ void print_end(const board::FlyLoop& loop, const board::OutputDevices& outputs, 
   const auto& imu = loop.board().imu().counters();
   const auto& b = loop.board().counters();
   const est::NavCounters& n = loop.unit().navigator().counters();
+  const est::SensorScaleVerdict& units = loop.unit().navigator().scale_verdict();
+  char refused[96] = "";
+  if (units.accel_refused) {
+    std::snprintf(refused, sizeof refused, "NOT ALIGNED: the accelerometer reads %.3g g (its scale?)",
+                  units.specific_force_over_gravity);
+  }
   std::fprintf(stderr,
                "sinu fly: end: %llu IMU samples (%llu polled, %llu I2C errors, %llu re-inits; %llu data-ready "
                "timeouts); GPS %llu sentences corrupt, %llu garbage bytes; %llu solutions, %s\n",
@@ -47,7 +53,8 @@ void print_end(const board::FlyLoop& loop, const board::OutputDevices& outputs, 
                static_cast<unsigned long long>(loop.board().gps_counters().sentences.corrupt()),
                static_cast<unsigned long long>(loop.board().gps_counters().framing.noise_bytes),
                static_cast<unsigned long long>(loop.solutions()),
-               !loop.unit().navigator().aligned() ? "NOT ALIGNED"
+               units.accel_refused                ? refused
+               : !loop.unit().navigator().aligned() ? "NOT ALIGNED"
                : n.lost_total_s > 0.0            ? "solution was LOST at times"
                : n.resets() > 0                  ? "solution reset to GNSS at times"
                                                  : "solution ok");

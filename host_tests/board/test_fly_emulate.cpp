@@ -15,6 +15,7 @@
 #include "estimator/nav/nav_health.hpp"
 #include "host_tests/board/fly_flight.hpp"
 #include "host_tests/support/nav_error.hpp"
+#include "host_tests/support/replay_helpers.hpp"
 #include "host_tests/support/run_process.hpp"
 
 namespace sinu::test {
@@ -145,6 +146,22 @@ TEST(FlyEmulate, FaultsMidFlightAreSurvivedFlaggedAndTheSolutionReconverges) {
   // The recording holds the faults as the loop met them: it replays to the same solution.
   ASSERT_EQ(run_sinu({"replay", "--in", raw, "--out", tmp.file("from_raw"), "--quiet"}).exit_code, 0);
   EXPECT_EQ(read_file(tmp.file("fly_nav.csv")), read_file(tmp.file("from_raw") + "/nav.csv"));
+}
+
+// An accelerometer read at the wrong full scale (configured +-16 g, decoded
+// as +-2 g: 8x; the other way 1/8x) is every sample a valid number: the
+// unit must not fly on it. The alignment is refused and both the health line
+// and the end line say why.
+TEST(FlyEmulate, AnAccelerometerAtTheWrongScaleIsRefusedAndSaidSo) {
+  TempDir tmp;
+  const FlyFlight fl = make_fly_flight(tmp, "flight", 300, 13);  // the simulator's shortest flight
+  const std::string wrong = with_scaled_columns(fl.quantised, tmp.file("eighth"), {{"ax", 0.125}, {"ay", 0.125}, {"az", 0.125}});
+  const std::string config = write_fly_config(tmp, "fly");
+  const ProcessResult r = run_sinu({"fly", "--health-period", "0.001", "--config", config, "--emulate", wrong, "--speed", "0"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("NAV REFUSED: accelerometer reads 0.125 g"), std::string::npos) << r.err.substr(0, 2000);
+  EXPECT_NE(r.err.find("0 solutions, NOT ALIGNED: the accelerometer reads 0.125 g"), std::string::npos)
+      << r.err.substr(r.err.size() > 2000 ? r.err.size() - 2000 : 0);
 }
 
 // systemctl stop (SIGTERM) and Ctrl-C (SIGINT) mid-flight: the loop ends its

@@ -9,11 +9,8 @@
 // magnetometer starts (not used, and the reason); the real units pass both.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -24,37 +21,6 @@
 
 namespace sinu::test {
 namespace {
-
-/// A copy of dataset `src` at `dst` with imu.csv's named columns multiplied
-/// by their factor (empty fields stay empty). Returns dst.
-std::string with_scaled_columns(const std::string& src, const std::string& dst,
-                                const std::map<std::string, double>& factor) {
-  std::filesystem::create_directories(dst);
-  for (const auto& e : std::filesystem::directory_iterator(src)) {
-    if (e.path().filename() != "imu.csv") std::filesystem::copy_file(e.path(), std::filesystem::path(dst) / e.path().filename());
-  }
-  std::ifstream in(src + "/imu.csv");
-  std::ofstream out(dst + "/imu.csv");
-  std::string line;
-  std::getline(in, line);
-  out << line << '\n';
-  std::vector<double> scale;
-  std::stringstream header(line);
-  for (std::string name; std::getline(header, name, ',');) scale.push_back(factor.count(name) ? factor.at(name) : 1.0);
-  out.precision(10);
-  while (std::getline(in, line)) {
-    std::stringstream row(line);
-    std::size_t i = 0;
-    for (std::string field; std::getline(row, field, ','); ++i) {
-      if (i > 0) out << ',';
-      if (field.empty() || scale[i] == 1.0) out << field;
-      else out << std::stod(field) * scale[i];
-    }
-    if (!line.empty() && line.back() == ',') out << ',';  // a trailing empty field (no temp)
-    out << '\n';
-  }
-  return dst;
-}
 
 class SensorUnits : public ::testing::Test {
  protected:

@@ -1,12 +1,15 @@
 #pragma once
 // Helpers of the replay tests that run the sinu binary on edited copies of a
-// dataset: copy a dataset with its gps.nmea filtered or edited line by line,
-// replay and read summary.json, and the ten outages on the real drive.
+// dataset: copy a dataset with its gps.nmea filtered or edited line by line
+// or with imu.csv columns rescaled (other units), replay and read
+// summary.json, and the ten outages on the real drive.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -29,6 +32,37 @@ inline std::string copy_dataset_editing_gps(const std::string& src, const std::s
   std::ofstream out(dst + "/gps.nmea");
   for (std::string line; std::getline(in, line);) {
     if (keep(line)) out << line << '\n';
+  }
+  return dst;
+}
+
+/// A copy of dataset `src` at `dst` with imu.csv's named columns multiplied
+/// by their factor (empty fields stay empty). Returns dst.
+inline std::string with_scaled_columns(const std::string& src, const std::string& dst,
+                                const std::map<std::string, double>& factor) {
+  std::filesystem::create_directories(dst);
+  for (const auto& e : std::filesystem::directory_iterator(src)) {
+    if (e.path().filename() != "imu.csv") std::filesystem::copy_file(e.path(), std::filesystem::path(dst) / e.path().filename());
+  }
+  std::ifstream in(src + "/imu.csv");
+  std::ofstream out(dst + "/imu.csv");
+  std::string line;
+  std::getline(in, line);
+  out << line << '\n';
+  std::vector<double> scale;
+  std::stringstream header(line);
+  for (std::string name; std::getline(header, name, ',');) scale.push_back(factor.count(name) ? factor.at(name) : 1.0);
+  out.precision(10);
+  while (std::getline(in, line)) {
+    std::stringstream row(line);
+    std::size_t i = 0;
+    for (std::string field; std::getline(row, field, ','); ++i) {
+      if (i > 0) out << ',';
+      if (field.empty() || scale[i] == 1.0) out << field;
+      else out << std::stod(field) * scale[i];
+    }
+    if (!line.empty() && line.back() == ',') out << ',';  // a trailing empty field (no temp)
+    out << '\n';
   }
   return dst;
 }
