@@ -149,6 +149,39 @@ INSTANTIATE_TEST_SUITE_P(
         MalformedCase{"BlankLine", kHeader + kGood + "\n", 3, 1, "expected 11 fields, found 1"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
+/// `n` rows at `period` from t0, with `gap_after` (row index) followed by an extra `gap` of time.
+std::string imu_rows(double t0, double period, int n, int gap_after = -1, double gap = 0.0) {
+  std::string text = kHeader;
+  double t = t0;
+  for (int i = 0; i < n; ++i) {
+    char line[96];
+    std::snprintf(line, sizeof line, "%.6f,0,0,-9.8,0,0,0,,,,25\n", t);
+    text += line;
+    t += period + (i == gap_after ? gap : 0.0);
+  }
+  return text;
+}
+
+// A converter that wrote t in milliseconds: every row is valid, and the
+// replay reset 2591 times over a 5-minute flight (the IMU ran at "0.04 Hz").
+TEST(CsvTable, TimeInMillisecondsIsAnErrorSayingSo) {
+  sinu::test::TempDir dir;
+  const Diagnostic d = read_all(dir.write("imu.csv", imu_rows(667788.0, 25.0, 40)));
+  EXPECT_EQ(d.line, 22u) << d.to_string();  // the 21st row: its 20 intervals judged
+  EXPECT_EQ(d.column, 1u);
+  EXPECT_NE(d.message.find("median 25 s per row"), std::string::npos) << d.to_string();
+  EXPECT_NE(d.message.find("t must be seconds"), std::string::npos) << d.to_string();
+}
+
+// Seconds with a 3-s gap among the first rows, or a 10-Hz IMU: read as they are.
+TEST(CsvTable, TimeInSecondsWithAGapOrASlowImuIsRead) {
+  sinu::test::TempDir dir;
+  std::size_t rows = 0;
+  EXPECT_TRUE(read_all(dir.write("gap.csv", imu_rows(100.0, 0.025, 40, 5, 3.0)), &rows).message.empty());
+  EXPECT_EQ(rows, 40u);
+  EXPECT_TRUE(read_all(dir.write("slow.csv", imu_rows(100.0, 0.1, 40)), &rows).message.empty());
+}
+
 TEST(CsvTable, MissingFileIsAnErrorNamingIt) {
   const Diagnostic d = read_all("/nonexistent/imu.csv");
   EXPECT_EQ(d.file, "/nonexistent/imu.csv");

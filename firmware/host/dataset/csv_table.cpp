@@ -1,5 +1,6 @@
 #include "firmware/host/dataset/csv_table.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -115,6 +116,7 @@ ReadStatus CsvReader::fail(std::size_t line, std::size_t column, std::string mes
 bool CsvReader::open(const std::string& path) {
   path_ = path;
   rows_ = 0;
+  first_t_count_ = 0;
   if (!lines_.open(path)) {
     fail(0, 0, std::string("cannot open: ") + std::strerror(errno));
     return false;
@@ -191,7 +193,26 @@ ReadStatus CsvReader::next(CsvRow& row) {
   }
   last_t_ = row.t();
   ++rows_;
+  if (first_t_count_ < kIntervalRows) {
+    first_t_[first_t_count_++] = row.t();
+    if (first_t_count_ == kIntervalRows) return check_time_unit(line_no);
+  }
   return ReadStatus::Row;
+}
+
+ReadStatus CsvReader::check_time_unit(std::size_t line_no) {
+  if (!(schema_.max_median_interval_s > 0.0)) return ReadStatus::Row;
+  std::array<double, kIntervalRows - 1> dt{};
+  for (std::size_t i = 0; i + 1 < kIntervalRows; ++i) dt[i] = first_t_[i + 1] - first_t_[i];
+  std::nth_element(dt.begin(), dt.begin() + dt.size() / 2, dt.end());
+  const double median = dt[dt.size() / 2];
+  if (median <= schema_.max_median_interval_s) return ReadStatus::Row;
+  char msg[256];
+  std::snprintf(msg, sizeof msg,
+                "field 't': the first %zu rows advance a median %.6g s per row (%.3g Hz), more than the %.3g s "
+                "any sensor of this file takes: t must be seconds (milliseconds read 1000x)",
+                kIntervalRows, median, 1.0 / median, schema_.max_median_interval_s);
+  return fail(line_no, 1, msg);
 }
 
 CsvWriter::CsvWriter(const CsvSchema& schema) : schema_(schema), buffer_(new char[kWriteBuffer]) {}

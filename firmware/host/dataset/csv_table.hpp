@@ -24,6 +24,9 @@ inline constexpr std::size_t kMaxCsvColumns = 16;
 struct CsvSchema {
   std::string_view file_name;                  // "imu.csv", used in messages
   std::span<const std::string_view> columns;   // columns[0] is "t"
+  // t in other units than seconds (ms read 1000x): the median interval of the
+  // first rows above this is an error (0: not checked).
+  double max_median_interval_s = 0.0;
 };
 
 struct CsvRow {
@@ -82,6 +85,11 @@ class CsvReader {
   std::size_t time_anomalies_ = 0, non_finite_rows_ = 0;
   double last_t_ = 0.0;
   std::size_t rows_ = 0;
+  static constexpr std::size_t kIntervalRows = 21;  // the first rows' times, for the units check
+  std::array<double, kIntervalRows> first_t_{};
+  std::size_t first_t_count_ = 0;
+  /// The first rows' median interval against schema.max_median_interval_s.
+  ReadStatus check_time_unit(std::size_t line_no);
 };
 
 /// How one column is printed: shortest round-trip (precision 0), or a fixed

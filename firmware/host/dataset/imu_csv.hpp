@@ -15,7 +15,8 @@ enum : std::size_t { t, ax, ay, az, gx, gy, gz, mx, my, mz, temp, count };
 
 inline constexpr std::array<std::string_view, imu_col::count> kImuColumns = {
     "t", "ax", "ay", "az", "gx", "gy", "gz", "mx", "my", "mz", "temp"};
-inline constexpr CsvSchema kImuSchema{"imu.csv", kImuColumns};
+// An IMU samples at 10 Hz or faster; 1 s between samples is already no IMU.
+inline constexpr CsvSchema kImuSchema{"imu.csv", kImuColumns, 1.0};
 
 /// Named view of one imu.csv row.
 struct ImuRow {

@@ -47,7 +47,12 @@ bool DatasetSource::run(ReplayFeed& feed, std::string& error) {
       gps_st = gps_.next(fix);
     }
     feed.on_imu(s);
+    imu_end_s_ = s.t_s;
   }
+  // Fixes after the last IMU sample are never used; many of them is a clock
+  // (or unit) mismatch between the two files, which the summary names.
+  if (st != dataset::ReadStatus::Error && gps_st == dataset::ReadStatus::Row) first_fix_after_imu_s_ = fix.arrival_s;
+  for (; st != dataset::ReadStatus::Error && gps_st == dataset::ReadStatus::Row; gps_st = gps_.next(fix)) ++fixes_after_imu_;
   if (st == dataset::ReadStatus::Error) {
     error = imu_.error().to_string();
     return false;
@@ -66,6 +71,9 @@ SourceCounters DatasetSource::counters() const {
   c.time_anomalies = imu_.time_anomalies();
   c.non_finite_rows = imu_.non_finite_rows();
   if (!imu_.first_anomaly().message.empty()) c.first_anomaly = imu_.first_anomaly().to_string();
+  c.fixes_after_imu = fixes_after_imu_;
+  c.first_fix_after_imu_s = first_fix_after_imu_s_;
+  c.imu_end_s = imu_end_s_;
   return c;
 }
 

@@ -23,6 +23,8 @@ class DatasetSource final : public ReplaySource {
   dataset::CsvReader imu_{dataset::kImuSchema, dataset::CsvLeniency{true, true}};
   dataset::GpsLogReader gps_;
   bool has_gps_ = false;
+  std::uint64_t fixes_after_imu_ = 0;
+  double first_fix_after_imu_s_ = 0.0, imu_end_s_ = 0.0;
   std::uint64_t incomplete_rows_ = 0;
 };
 

@@ -52,6 +52,11 @@ std::string ReplayResult::not_aligned_reason() const {
                        scale.mean_specific_force_m_s2, scale.gravity_m_s2, scale.specific_force_over_gravity);
   }
   if (gnss.used > 0) return "no rest period and no GNSS motion to align on";
+  if (source.fixes_after_imu > 0 && gnss.epochs == 0) {
+    return fmt::format("gps.nmea's {} fixes all arrive after imu.csv's last sample (the first at t={:.7g} s, imu.csv "
+                       "ends at {:.7g} s): both files must share one clock, in seconds",
+                       source.fixes_after_imu, source.first_fix_after_imu_s, source.imu_end_s);
+  }
   if (gnss.without_height > 0) return "the GNSS fixes have no height: RMC or GLL without a GGA sentence";
   return "no GNSS position in the data: gps.nmea absent, empty or without a fix; the INS needs one to start from";
 }

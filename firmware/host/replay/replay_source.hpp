@@ -30,6 +30,8 @@ struct SourceCounters {
   std::uint64_t time_anomalies = 0;     // imu.csv rows whose time did not increase (passed on, dropped there)
   std::uint64_t non_finite_rows = 0;    // imu.csv rows with a NaN/inf value (passed on, dropped there)
   std::string first_anomaly;            // file:line:column of the first of either ("" if none)
+  std::uint64_t fixes_after_imu = 0;    // GNSS fixes arriving after the last IMU sample (never used)
+  double first_fix_after_imu_s = 0.0, imu_end_s = 0.0;  // valid when fixes_after_imu > 0
 };
 
 class ReplaySource {
