@@ -251,14 +251,15 @@ void Navigator::process(const ImuSample& s) {
 }
 
 void Navigator::align(const ImuSample& s, double dt) {
-  if (scale_check_.verdict().accel_refused) return;  // the data's units are wrong throughout
+  if (scale_check_.refused()) return;  // the data's units are wrong throughout
   alignment_.add_imu(s, dt);
-  scale_check_.add_specific_force(s.specific_force_b_m_s2.norm());
+  scale_check_.add_sample(s.specific_force_b_m_s2, s.angular_rate_b_rad_s, dt);
   AlignmentResult res;
   const double latency = filter_.gps_latency_s();
   while (!gnss_.empty() && gnss_.front().arrival_s - latency <= s.t_s) {
     const GnssObservation z = gnss_.front();
     gnss_.pop();
+    if (!scale_check_.gyro_plausible(z.has_velocity ? z.v_ne_m_s.norm() : NAN)) return;
     if (!alignment_.add_gnss(z, s.t_s, res)) continue;
     if (!scale_check_.accel_plausible(wgs84::normal_gravity_m_s2(res.nav.lat_rad, res.nav.h_m))) return;
     alignment_result_ = res;

@@ -190,7 +190,7 @@ class Navigator {
   /// End of data: process everything still buffered.
   void flush();
 
-  bool aligned() const { return alignment_.status() == AlignStatus::Aligned && !scale_check_.verdict().accel_refused; }
+  bool aligned() const { return alignment_.status() == AlignStatus::Aligned && !scale_check_.refused(); }
   AlignStatus alignment_status() const { return alignment_.status(); }
   const NavState& nav() const { return nav_; }
   const ErrorStateFilter& filter() const { return filter_; }

@@ -16,6 +16,14 @@
 //     a factor of 2 at most; a wrong unit by 10 (mG), 100 (G), 1000 (nT).
 //     Outside [1 / mag_max, mag_max] the sample does not start the
 //     magnetometer; it is counted and the navigation goes on without it.
+//   Gyro: its scatter over the last second at each GNSS epoch before the
+//     alignment that says the unit stands still while the accelerometer is
+//     quiet. A MEMS gyro at rest scatters below 0.03 rad/s (the real
+//     quadcopter 0.006, the real car with its engine idling 0.018-0.028, the
+//     simulator 0.0016); in deg/s it reads 57x (0.09-1.6). Its mean is no
+//     test: a turn-on bias can be tens of deg/s.
+#include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -25,6 +33,10 @@ struct SensorScaleCheckConfig {
   double accel_min_ratio = 0.7;
   double accel_max_ratio = 1.5;
   double mag_max_ratio = 5.0;
+  double tau_s = 1.0;                    // the scatter's averaging time
+  double still_max_speed_m_s = 0.3;      // the GNSS says still
+  double still_max_accel_std_m_s2 = 0.1; // the accelerometer says still
+  double gyro_max_std_rad_s = 0.05;      // 3 deg/s of noise at rest: no MEMS gyro
 };
 
 /// The verdicts, for the summary: NaN ratios where nothing was judged.
@@ -35,6 +47,9 @@ struct SensorScaleVerdict {
   double field_over_model = NAN;  // the last refused field sample's |m| / the model's strength
   double model_field_uT = NAN;
   std::uint64_t mag_refused_samples = 0;  // field samples that could not start the magnetometer
+  bool gyro_refused = false;              // the alignment was refused for the gyro's scatter at rest
+  double gyro_std_at_rest_rad_s = NAN;     // judged when the GNSS and the accelerometer said still
+  double accel_std_at_rest_m_s2 = NAN;
 };
 
 class SensorScaleCheck {
@@ -47,12 +62,37 @@ class SensorScaleCheck {
     verdict_ = {};
     sum_f_ = 0.0;
     n_f_ = 0;
+    have_scatter_ = false;
+    var_f_ = var_w_ = 0.0;
   }
-  /// A sample's specific force before the alignment [m/s^2].
-  void add_specific_force(double norm_m_s2) {
-    if (!std::isfinite(norm_m_s2)) return;
-    sum_f_ += norm_m_s2;
+  /// A sample before the alignment, dt since the previous one.
+  void add_sample(const Eigen::Vector3d& f_m_s2, const Eigen::Vector3d& w_rad_s, double dt_s) {
+    if (!f_m_s2.allFinite() || !w_rad_s.allFinite()) return;
+    sum_f_ += f_m_s2.norm();
     ++n_f_;
+    if (!have_scatter_) {
+      mean_f_ = f_m_s2;
+      mean_w_ = w_rad_s;
+      have_scatter_ = true;
+      return;
+    }
+    const double a = std::clamp(dt_s / cfg_.tau_s, 0.0, 1.0);
+    mean_f_ += a * (f_m_s2 - mean_f_);
+    mean_w_ += a * (w_rad_s - mean_w_);
+    var_f_ += a * ((f_m_s2 - mean_f_).squaredNorm() / 3.0 - var_f_);
+    var_w_ += a * ((w_rad_s - mean_w_).squaredNorm() / 3.0 - var_w_);
+  }
+  /// A GNSS epoch before the alignment, its speed (NaN: none): the gyro's
+  /// scatter is judged when the GNSS and the accelerometer say still; false
+  /// (and refused from then on) when it cannot be a gyro's in rad/s.
+  bool gyro_plausible(double gnss_speed_m_s) {
+    const double accel_std = std::sqrt(var_f_), gyro_std = std::sqrt(var_w_);
+    if (verdict_.gyro_refused) return false;
+    if (!(gnss_speed_m_s < cfg_.still_max_speed_m_s) || !(accel_std < cfg_.still_max_accel_std_m_s2)) return true;
+    verdict_.gyro_std_at_rest_rad_s = gyro_std;
+    verdict_.accel_std_at_rest_m_s2 = accel_std;
+    verdict_.gyro_refused = gyro_std > cfg_.gyro_max_std_rad_s;
+    return !verdict_.gyro_refused;
   }
   /// At the alignment: true when the accelerometer reads gravity as gravity.
   bool accel_plausible(double gravity_m_s2) {
@@ -76,12 +116,17 @@ class SensorScaleCheck {
     return false;
   }
   const SensorScaleVerdict& verdict() const { return verdict_; }
+  /// The alignment was refused: the accelerometer's or the gyro's units.
+  bool refused() const { return verdict_.accel_refused || verdict_.gyro_refused; }
 
  private:
   SensorScaleCheckConfig cfg_;
   SensorScaleVerdict verdict_;
   double sum_f_ = 0.0;
   std::uint64_t n_f_ = 0;
+  bool have_scatter_ = false;
+  Eigen::Vector3d mean_f_ = Eigen::Vector3d::Zero(), mean_w_ = Eigen::Vector3d::Zero();
+  double var_f_ = 0.0, var_w_ = 0.0;
 };
 
 }  // namespace sinu::est

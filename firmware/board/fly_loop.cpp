@@ -128,6 +128,9 @@ std::size_t FlyLoop::health_line(const FlyHealth& h, char* buf, std::size_t size
   if (units.accel_refused) {
     append(buf, size, n, " | NAV REFUSED: accelerometer reads %.3g g (not m/s^2? driver scale)",
            units.specific_force_over_gravity);
+  } else if (units.gyro_refused) {
+    append(buf, size, n, " | NAV REFUSED: gyro scatters %.3g rad/s at rest (not rad/s? driver scale)",
+           units.gyro_std_at_rest_rad_s);
   } else if (!unit_.navigator().aligned()) {
     append(buf, size, n, " | NAV aligning");
   } else {

@@ -43,6 +43,9 @@ void print_end(const board::FlyLoop& loop, const board::OutputDevices& outputs, 
   if (units.accel_refused) {
     std::snprintf(refused, sizeof refused, "NOT ALIGNED: the accelerometer reads %.3g g (its scale?)",
                   units.specific_force_over_gravity);
+  } else if (units.gyro_refused) {
+    std::snprintf(refused, sizeof refused, "NOT ALIGNED: the gyro scatters %.3g rad/s at rest (its scale?)",
+                  units.gyro_std_at_rest_rad_s);
   }
   std::fprintf(stderr,
                "sinu fly: end: %llu IMU samples (%llu polled, %llu I2C errors, %llu re-inits; %llu data-ready "
@@ -53,7 +56,7 @@ void print_end(const board::FlyLoop& loop, const board::OutputDevices& outputs, 
                static_cast<unsigned long long>(loop.board().gps_counters().sentences.corrupt()),
                static_cast<unsigned long long>(loop.board().gps_counters().framing.noise_bytes),
                static_cast<unsigned long long>(loop.solutions()),
-               units.accel_refused                ? refused
+               units.accel_refused || units.gyro_refused ? refused
                : !loop.unit().navigator().aligned() ? "NOT ALIGNED"
                : n.lost_total_s > 0.0            ? "solution was LOST at times"
                : n.resets() > 0                  ? "solution reset to GNSS at times"

@@ -5,11 +5,14 @@
 // magnetometer in mG it re-anchored the hard iron 59 times (6.3 deg against
 // 5.0 without the magnetometer). Neither said why. Now the accelerometer is
 // held against gravity at the alignment (refused: no solution, and the reason)
-// and the field against the World Magnetic Model's strength before the
-// magnetometer starts (not used, and the reason); the real units pass both.
-// GNSS arrival times in another unit than the IMU's are named too.
+// the field against the World Magnetic Model's strength before the
+// magnetometer starts (not used, and the reason), and the gyro's scatter
+// where the GNSS and the accelerometer say still (refused, and the reason);
+// the real units pass them all. GNSS arrival times in another unit than the
+// IMU's are named too.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -41,6 +44,9 @@ TEST_F(SensorUnits, TheSimulatorsUnitsPassBothChecks) {
   // The mean |f| before the alignment: gravity, a little more in the climb-out.
   EXPECT_NEAR(s["sensor_units"]["specific_force_over_gravity"].get<double>(), 1.0, 0.05);
   EXPECT_FALSE(s["sensor_units"]["accel_refused"].get<bool>());
+  // Judged at the rest before take-off: the simulator's gyro noise (0.0016-0.0018 rad/s measured).
+  EXPECT_LT(s["sensor_units"]["gyro_std_at_rest_rad_s"].get<double>(), 0.005);
+  EXPECT_FALSE(s["sensor_units"]["gyro_refused"].get<bool>());
   EXPECT_EQ(s["sensor_units"]["mag_refused_samples"].get<int>(), 0);
   EXPECT_GT(s["accepted"]["magnetometer"].get<int>(), 0);
 }
@@ -57,6 +63,22 @@ TEST_F(SensorUnits, AnAccelerometerInGIsRefusedWithTheReason) {
   EXPECT_FALSE(s["aligned"].get<bool>());
   EXPECT_TRUE(s["sensor_units"]["accel_refused"].get<bool>());
   EXPECT_NEAR(s["sensor_units"]["specific_force_over_gravity"].get<double>(), 1.0 / 9.80665, 0.01);
+}
+
+// A gyro in deg/s: the real quadcopter aligned in motion while it stood on
+// the ground (its rest never looked still) and reset 7 times (124 deg,
+// velocity 273 m/s RMS); the simulator's flight the same way.
+TEST_F(SensorUnits, AGyroInDegreesPerSecondIsRefusedWithTheReason) {
+  const double k = 180.0 / M_PI;
+  const std::string deg = with_scaled_columns(file("flight"), file("gyro_deg"), {{"gx", k}, {"gy", k}, {"gz", k}});
+  const auto r = run_sinu({"replay", "--in", deg, "--out", file("r_gyro_deg")});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("NOT ALIGNED"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("imu.csv's gx, gy, gz must be rad/s"), std::string::npos) << r.out;
+  const auto s = read_json(file("r_gyro_deg") + "/summary.json");
+  EXPECT_TRUE(s["sensor_units"]["gyro_refused"].get<bool>());
+  // 57x the simulator's 0.0017 rad/s, above the 0.05 bound (measured 0.067).
+  EXPECT_GT(s["sensor_units"]["gyro_std_at_rest_rad_s"].get<double>(), 0.05);
 }
 
 // mG read 10x the Earth's field, G 0.01x: the magnetometer is left out, as

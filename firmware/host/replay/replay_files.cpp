@@ -108,6 +108,8 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
   // The units check (estimator/nav/sensor_scale_check.hpp): null where nothing was judged.
   sj["sensor_units"] = {{"specific_force_over_gravity", num(r.scale.specific_force_over_gravity)},
                         {"accel_refused", r.scale.accel_refused},
+                        {"gyro_std_at_rest_rad_s", num(r.scale.gyro_std_at_rest_rad_s)},
+                        {"gyro_refused", r.scale.gyro_refused},
                         {"field_over_model", num(r.scale.field_over_model)},
                         {"mag_refused_samples", r.scale.mag_refused_samples},
                         {"mag_refused", r.mag_refused_reason()}};

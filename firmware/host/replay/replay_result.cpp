@@ -51,6 +51,12 @@ std::string ReplayResult::not_aligned_reason() const {
                        "m/s^2 ({:.3g}x): imu.csv's ax, ay, az must be m/s^2 (in g they read 0.1x)",
                        scale.mean_specific_force_m_s2, scale.gravity_m_s2, scale.specific_force_over_gravity);
   }
+  if (scale.gyro_refused) {
+    return fmt::format("the gyro scatters {:.3g} rad/s while the GNSS and the accelerometer (scatter {:.3g} m/s^2) say "
+                       "the unit stands still; a MEMS gyro at rest scatters below 0.03: imu.csv's gx, gy, gz must be "
+                       "rad/s (in deg/s they read 57x)",
+                       scale.gyro_std_at_rest_rad_s, scale.accel_std_at_rest_m_s2);
+  }
   if (gnss.used > 0) return "no rest period and no GNSS motion to align on";
   if (source.fixes_after_imu > 0 && gnss.epochs == 0) {
     return fmt::format("gps.nmea's {} fixes all arrive after imu.csv's last sample (the first at t={:.7g} s, imu.csv "
