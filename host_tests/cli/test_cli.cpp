@@ -1,6 +1,8 @@
 // The sinu command: help, exit codes, and inspect dataset's errors.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/shared_data.hpp"
 #include "host_tests/support/temp_dir.hpp"
@@ -68,6 +70,31 @@ TEST(Cli, InspectSummarisesAValidDataset) {
   EXPECT_NE(r.out.find("\"count\": 399"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"gaps\": 1"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"corrupt\": 1"), std::string::npos) << r.out;
+}
+
+// The magnitudes hint at the units before any replay: gravity ~9.8 m/s^2,
+// the Earth's field 22-67 uT. An accelerometer in g and a field in mG are
+// named; SI data is not.
+TEST(Cli, InspectNamesMagnitudesThatAreNotSi) {
+  sinu::test::TempDir dir;
+  std::string si = kHeader, other = kHeader;
+  for (int i = 0; i < 100; ++i) {
+    const std::string t = std::to_string(50.0 + 0.025 * i);
+    si += t + ",0.1,0,-9.8,0,0,0,20,0,40,25\n";
+    other += t + ",0.01,0,-1.0,0,0,0,200,0,400,25\n";  // g and mG
+  }
+  std::filesystem::create_directories(dir.path() / "si");
+  std::filesystem::create_directories(dir.path() / "other");
+  dir.write("si/imu.csv", si);
+  dir.write("other/imu.csv", other);
+  auto r = run_sinu({"inspect", "dataset", (dir.path() / "si").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.find("UNITS?"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("mean |f| 9.801 m/s^2, mean |m| 44.72 uT"), std::string::npos) << r.out;
+  r = run_sinu({"inspect", "dataset", (dir.path() / "other").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("ax, ay, az must be m/s^2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("mx, my, mz must be uT"), std::string::npos) << r.out;
 }
 
 // An IMU-only dataset (a bench session given to replay by mistake): the INS

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -11,6 +12,19 @@
 #include "firmware/host/dataset/truth_csv.hpp"
 
 namespace sinu::dataset {
+
+std::string ImuSummary::units_warning() const {
+  std::string w;
+  const double f = mean_specific_force_m_s2(), m = mean_field_uT();
+  // The bounds of the replay's check: a vehicle averages ~1 g; a hard iron of
+  // tens of uT moves the Earth's 22-67 uT by 2x at most.
+  if (accel_rows && (f < 0.7 * 9.8 || f > 1.5 * 9.8))
+    w += fmt::format("mean |f| {:.3g} is not ~9.8: ax, ay, az must be m/s^2 (in g they read 0.1x); ", f);
+  if (mag_rows && (m < 22.0 / 5.0 || m > 67.0 * 5.0))
+    w += fmt::format("mean |m| {:.3g} is not the Earth's 22-67: mx, my, mz must be uT (mG read 10x, G 0.01x); ", m);
+  if (!w.empty()) w.resize(w.size() - 2);
+  return w;
+}
 
 namespace {
 
@@ -24,6 +38,9 @@ bool read_imu(const std::string& path, ImuSummary& s, Diagnostic& err) {
     s.accel_rows += r.has_accel();
     s.gyro_rows += r.has_gyro();
     s.mag_rows += r.has_mag();
+    const auto norm = [](const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
+    if (r.has_accel()) s.sum_specific_force_m_s2 += norm(r.specific_force_b_m_s2());
+    if (r.has_mag()) s.sum_field_uT += norm(r.mag_b_uT());
     s.temp_rows += r.has_temp();
   }
   s.time.finish();
@@ -110,6 +127,9 @@ std::string format_summary(const DatasetSummary& s) {
   o += rate_line("imu.csv", s.imu.time, "rows");
   o += fmt::format("            accel {} gyro {} mag {} temp {} rows\n", s.imu.accel_rows, s.imu.gyro_rows,
                    s.imu.mag_rows, s.imu.temp_rows);
+  o += fmt::format("            mean |f| {:.4g} m/s^2, mean |m| {}\n", s.imu.mean_specific_force_m_s2(),
+                   s.imu.mag_rows ? fmt::format("{:.4g} uT", s.imu.mean_field_uT()) : std::string("-"));
+  if (const std::string w = s.imu.units_warning(); !w.empty()) o += "            UNITS? " + w + "\n";
   if (s.gps) {
     const auto& g = *s.gps;
     o += fmt::format("  gps.nmea  {:>9} lines  {} sentences decoded, {} ignored, {} corrupt", g.lines,
@@ -151,7 +171,10 @@ std::string format_summary_json(const DatasetSummary& s) {
               {"accel_rows", s.imu.accel_rows},
               {"gyro_rows", s.imu.gyro_rows},
               {"mag_rows", s.imu.mag_rows},
-              {"temp_rows", s.imu.temp_rows}};
+              {"temp_rows", s.imu.temp_rows},
+              {"mean_specific_force_m_s2", s.imu.mean_specific_force_m_s2()},
+              {"mean_field_uT", s.imu.mag_rows ? nlohmann::json(s.imu.mean_field_uT()) : nlohmann::json(nullptr)},
+              {"units_warning", s.imu.units_warning()}};
   if (s.gps) {
     const auto& g = *s.gps;
     j["gps"] = {{"lines", g.lines},

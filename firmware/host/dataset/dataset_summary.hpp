@@ -16,6 +16,13 @@ namespace sinu::dataset {
 struct ImuSummary {
   RateTracker time;
   std::size_t accel_rows = 0, gyro_rows = 0, mag_rows = 0, temp_rows = 0;
+  // Magnitudes, for a look at the units (replay checks them properly:
+  // estimator/nav/sensor_scale_check.hpp): ~9.8 m/s^2, 22-67 uT on Earth.
+  double sum_specific_force_m_s2 = 0.0, sum_field_uT = 0.0;
+  double mean_specific_force_m_s2() const { return accel_rows ? sum_specific_force_m_s2 / static_cast<double>(accel_rows) : 0.0; }
+  double mean_field_uT() const { return mag_rows ? sum_field_uT / static_cast<double>(mag_rows) : 0.0; }
+  /// "" or what the magnitudes say about the units.
+  std::string units_warning() const;
 };
 
 struct GpsSummary {
