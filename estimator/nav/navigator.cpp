@@ -259,7 +259,7 @@ void Navigator::align(const ImuSample& s, double dt) {
   while (!gnss_.empty() && gnss_.front().arrival_s - latency <= s.t_s) {
     const GnssObservation z = gnss_.front();
     gnss_.pop();
-    if (!scale_check_.gyro_plausible(z.has_velocity ? z.v_ne_m_s.norm() : NAN)) return;
+    if (!scale_check_.gyro_plausible(s.t_s, z.has_velocity ? z.v_ne_m_s.norm() : NAN)) continue;
     if (!alignment_.add_gnss(z, s.t_s, res)) continue;
     if (!scale_check_.accel_plausible(wgs84::normal_gravity_m_s2(res.nav.lat_rad, res.nav.h_m))) return;
     alignment_result_ = res;

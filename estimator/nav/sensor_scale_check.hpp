@@ -21,7 +21,11 @@
 //     quiet. A MEMS gyro at rest scatters below 0.03 rad/s (the real
 //     quadcopter 0.006, the real car with its engine idling 0.018-0.028, the
 //     simulator 0.0016); in deg/s it reads 57x (0.09-1.6). Its mean is no
-//     test: a turn-on bias can be tens of deg/s.
+//     test: a turn-on bias can be tens of deg/s. Refused when every judged
+//     epoch for gyro_persist_s exceeds the bound (wrong units are wrong at
+//     every one; a hand turning the unit for a second, whose scatter the
+//     1-s average holds for ~3 s more, is not). Meanwhile the epochs do not
+//     align the unit.
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
@@ -37,6 +41,7 @@ struct SensorScaleCheckConfig {
   double still_max_speed_m_s = 0.3;      // the GNSS says still
   double still_max_accel_std_m_s2 = 0.1; // the accelerometer says still
   double gyro_max_std_rad_s = 0.05;      // 3 deg/s of noise at rest: no MEMS gyro
+  double gyro_persist_s = 5.0;           // judged epochs above it for this long
 };
 
 /// The verdicts, for the summary: NaN ratios where nothing was judged.
@@ -64,6 +69,7 @@ class SensorScaleCheck {
     n_f_ = 0;
     have_scatter_ = false;
     var_f_ = var_w_ = 0.0;
+    gyro_exceeded_since_s_ = NAN;
   }
   /// A sample before the alignment, dt since the previous one.
   void add_sample(const Eigen::Vector3d& f_m_s2, const Eigen::Vector3d& w_rad_s, double dt_s) {
@@ -84,15 +90,18 @@ class SensorScaleCheck {
   }
   /// A GNSS epoch before the alignment, its speed (NaN: none): the gyro's
   /// scatter is judged when the GNSS and the accelerometer say still; false
-  /// (and refused from then on) when it cannot be a gyro's in rad/s.
-  bool gyro_plausible(double gnss_speed_m_s) {
+  /// while it cannot be a gyro's in rad/s (the epoch must not align the
+  /// unit), refused from then on once that has lasted gyro_persist_s.
+  bool gyro_plausible(double t_s, double gnss_speed_m_s) {
     const double accel_std = std::sqrt(var_f_), gyro_std = std::sqrt(var_w_);
     if (verdict_.gyro_refused) return false;
     if (!(gnss_speed_m_s < cfg_.still_max_speed_m_s) || !(accel_std < cfg_.still_max_accel_std_m_s2)) return true;
     verdict_.gyro_std_at_rest_rad_s = gyro_std;
     verdict_.accel_std_at_rest_m_s2 = accel_std;
-    verdict_.gyro_refused = gyro_std > cfg_.gyro_max_std_rad_s;
-    return !verdict_.gyro_refused;
+    if (!(gyro_std > cfg_.gyro_max_std_rad_s)) gyro_exceeded_since_s_ = NAN;
+    else if (std::isnan(gyro_exceeded_since_s_)) gyro_exceeded_since_s_ = t_s;
+    verdict_.gyro_refused = t_s - gyro_exceeded_since_s_ >= cfg_.gyro_persist_s;
+    return std::isnan(gyro_exceeded_since_s_);
   }
   /// At the alignment: true when the accelerometer reads gravity as gravity.
   bool accel_plausible(double gravity_m_s2) {
@@ -127,6 +136,7 @@ class SensorScaleCheck {
   bool have_scatter_ = false;
   Eigen::Vector3d mean_f_ = Eigen::Vector3d::Zero(), mean_w_ = Eigen::Vector3d::Zero();
   double var_f_ = 0.0, var_w_ = 0.0;
+  double gyro_exceeded_since_s_ = NAN;  // the first of the judged epochs in a row above the bound
 };
 
 }  // namespace sinu::est
