@@ -3,9 +3,9 @@
 // from elsewhere can carry the accelerometer in g, the magnetometer in mG,
 // G or nT: every sample is a valid number, and the filter (a 0.98-"m/s^2"
 // gravity read as an 8.8 m/s^2 bias; a field ten times the Earth's taken up
-// by the hard iron) degrades without saying why. Two references are known
-// here without any calibration: gravity, and the World Magnetic Model's
-// field strength at the first fix.
+// by the hard iron) degrades without saying why. Three references are known
+// here without any calibration: gravity, the World Magnetic Model's field
+// strength at the first fix, and a GNSS that says the unit stands still.
 //   Accelerometer: the mean |specific force| of every sample before the
 //     alignment against normal gravity. Vehicles average ~1 g (a level turn at
 //     45 deg of bank 1.41 g, vibration adds a little); a wrong unit is 0.1x
