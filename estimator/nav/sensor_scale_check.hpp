@@ -27,9 +27,10 @@
 //     1-s average holds for ~3 s more, is not). Meanwhile the epochs do not
 //     align the unit.
 #include <Eigen/Core>
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
+
+#include "estimator/nav/imu_scatter.hpp"
 
 namespace sinu::est {
 
@@ -37,7 +38,7 @@ struct SensorScaleCheckConfig {
   double accel_min_ratio = 0.7;
   double accel_max_ratio = 1.5;
   double mag_max_ratio = 5.0;
-  double tau_s = 1.0;                    // the scatter's averaging time
+  double tau_s = 1.0;                    // the scatter's averaging time (imu_scatter.hpp)
   double still_max_speed_m_s = 0.3;      // the GNSS says still
   double still_max_accel_std_m_s2 = 0.1; // the accelerometer says still
   double gyro_max_std_rad_s = 0.05;      // 3 deg/s of noise at rest: no MEMS gyro
@@ -52,9 +53,12 @@ struct SensorScaleVerdict {
   double field_over_model = NAN;  // the last refused field sample's |m| / the model's strength
   double model_field_uT = NAN;
   std::uint64_t mag_refused_samples = 0;  // field samples that could not start the magnetometer
+  bool mag_started = false;               // a field sample passed and started it
   bool gyro_refused = false;              // the alignment was refused for the gyro's scatter at rest
   double gyro_std_at_rest_rad_s = NAN;     // judged when the GNSS and the accelerometer said still
   double accel_std_at_rest_m_s2 = NAN;
+  /// The magnetometer never started, for its units.
+  bool mag_refused() const { return mag_refused_samples > 0 && !mag_started; }
 };
 
 class SensorScaleCheck {
@@ -67,8 +71,7 @@ class SensorScaleCheck {
     verdict_ = {};
     sum_f_ = 0.0;
     n_f_ = 0;
-    have_scatter_ = false;
-    var_f_ = var_w_ = 0.0;
+    scatter_.reset();
     gyro_exceeded_since_s_ = NAN;
   }
   /// A sample before the alignment, dt since the previous one.
@@ -76,24 +79,14 @@ class SensorScaleCheck {
     if (!f_m_s2.allFinite() || !w_rad_s.allFinite()) return;
     sum_f_ += f_m_s2.norm();
     ++n_f_;
-    if (!have_scatter_) {
-      mean_f_ = f_m_s2;
-      mean_w_ = w_rad_s;
-      have_scatter_ = true;
-      return;
-    }
-    const double a = std::clamp(dt_s / cfg_.tau_s, 0.0, 1.0);
-    mean_f_ += a * (f_m_s2 - mean_f_);
-    mean_w_ += a * (w_rad_s - mean_w_);
-    var_f_ += a * ((f_m_s2 - mean_f_).squaredNorm() / 3.0 - var_f_);
-    var_w_ += a * ((w_rad_s - mean_w_).squaredNorm() / 3.0 - var_w_);
+    scatter_.add(f_m_s2, w_rad_s, dt_s, cfg_.tau_s);
   }
   /// A GNSS epoch before the alignment, its speed (NaN: none): the gyro's
   /// scatter is judged when the GNSS and the accelerometer say still; false
   /// while it cannot be a gyro's in rad/s (the epoch must not align the
   /// unit), refused from then on once that has lasted gyro_persist_s.
   bool gyro_plausible(double t_s, double gnss_speed_m_s) {
-    const double accel_std = std::sqrt(var_f_), gyro_std = std::sqrt(var_w_);
+    const double accel_std = std::sqrt(scatter_.accel_var_m2_s4()), gyro_std = std::sqrt(scatter_.rate_var_rad2_s2());
     if (verdict_.gyro_refused) return false;
     if (!(gnss_speed_m_s < cfg_.still_max_speed_m_s) || !(accel_std < cfg_.still_max_accel_std_m_s2)) return true;
     verdict_.gyro_std_at_rest_rad_s = gyro_std;
@@ -116,9 +109,9 @@ class SensorScaleCheck {
   /// A field sample that would start the magnetometer: true when its
   /// strength can be the Earth's (or no model strength is known).
   bool field_plausible(double norm_uT, double model_uT) {
-    if (!(model_uT > 0.0) || !std::isfinite(norm_uT)) return true;
-    const double r = norm_uT / model_uT;
-    if (r <= cfg_.mag_max_ratio && r >= 1.0 / cfg_.mag_max_ratio) return true;
+    const bool judged = model_uT > 0.0 && std::isfinite(norm_uT);
+    const double r = judged ? norm_uT / model_uT : 1.0;
+    if (r <= cfg_.mag_max_ratio && r >= 1.0 / cfg_.mag_max_ratio) return verdict_.mag_started = true;
     verdict_.field_over_model = r;
     verdict_.model_field_uT = model_uT;
     ++verdict_.mag_refused_samples;
@@ -133,9 +126,7 @@ class SensorScaleCheck {
   SensorScaleVerdict verdict_;
   double sum_f_ = 0.0;
   std::uint64_t n_f_ = 0;
-  bool have_scatter_ = false;
-  Eigen::Vector3d mean_f_ = Eigen::Vector3d::Zero(), mean_w_ = Eigen::Vector3d::Zero();
-  double var_f_ = 0.0, var_w_ = 0.0;
+  ImuScatter scatter_;
   double gyro_exceeded_since_s_ = NAN;  // the first of the judged epochs in a row above the bound
 };
 

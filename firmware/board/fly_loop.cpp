@@ -141,9 +141,7 @@ std::size_t FlyLoop::health_line(const FlyHealth& h, char* buf, std::size_t size
            std::sqrt(s.P_nav(8, 8)) * kRadToDeg);
     if (fl & (f::kPositionReset | f::kVelocityReset | f::kYawReset)) append(buf, size, n, ", RESET to GNSS");
     if (fl & f::kClipping) append(buf, size, n, ", IMU CLIPPING");
-    const est::NavCounters& c = unit_.navigator().counters();
-    const auto mag = static_cast<std::size_t>(est::AidingSource::Magnetometer);
-    if (units.mag_refused_samples > 0 && c.accepted[mag] + c.rejected[mag] == 0) {
+    if (units.mag_refused()) {
       append(buf, size, n, ", MAG NOT USED: reads %.3gx the Earth's field (not uT?)", units.field_over_model);
     }
   }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "estimator/nav/sensor_scale_check.hpp"
 #include "firmware/host/dataset/csv_table.hpp"
 #include "firmware/host/dataset/imu_csv.hpp"
 #include "firmware/host/dataset/nmea_log.hpp"
@@ -16,11 +17,12 @@ namespace sinu::dataset {
 std::string ImuSummary::units_warning() const {
   std::string w;
   const double f = mean_specific_force_m_s2(), m = mean_field_uT();
-  // The bounds of the replay's check: a vehicle averages ~1 g; a hard iron of
-  // tens of uT moves the Earth's 22-67 uT by 2x at most.
-  if (accel_rows && (f < 0.7 * 9.8 || f > 1.5 * 9.8))
+  // The replay's bounds, against gravity and the Earth's 22-67 uT (inspect
+  // knows no position for the model's field).
+  const est::SensorScaleCheckConfig bound;
+  if (accel_rows && (f < bound.accel_min_ratio * 9.8 || f > bound.accel_max_ratio * 9.8))
     w += fmt::format("mean |f| {:.3g} is not ~9.8: ax, ay, az must be m/s^2 (in g they read 0.1x); ", f);
-  if (mag_rows && (m < 22.0 / 5.0 || m > 67.0 * 5.0))
+  if (mag_rows && (m < 22.0 / bound.mag_max_ratio || m > 67.0 * bound.mag_max_ratio))
     w += fmt::format("mean |m| {:.3g} is not the Earth's 22-67: mx, my, mz must be uT (mG read 10x, G 0.01x); ", m);
   if (!w.empty()) w.resize(w.size() - 2);
   return w;

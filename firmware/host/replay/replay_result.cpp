@@ -68,9 +68,7 @@ std::string ReplayResult::not_aligned_reason() const {
 }
 
 std::string ReplayResult::mag_refused_reason() const {
-  if (scale.mag_refused_samples == 0 || counters.accepted[static_cast<std::size_t>(est::AidingSource::Magnetometer)] +
-                                                counters.rejected[static_cast<std::size_t>(est::AidingSource::Magnetometer)] > 0)
-    return "";
+  if (!scale.mag_refused()) return "";
   return fmt::format("{} field samples read {:.3g}x the World Magnetic Model's {:.3g} uT here: imu.csv's mx, my, mz "
                      "must be uT (mG read 10x, G 0.01x, nT 1000x)",
                      scale.mag_refused_samples, scale.field_over_model, scale.model_field_uT);
