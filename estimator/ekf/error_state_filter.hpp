@@ -4,6 +4,7 @@
 // Measurements are built by the aiding sources (ekf/aiding/*) and fused with
 // fuse_measurement(); the filter only owns the state and its bookkeeping.
 #include "estimator/ekf/effect_tuning.hpp"
+#include "estimator/ekf/measurement_update.hpp"
 #include "estimator/ekf/sensor_error_model.hpp"
 #include "estimator/ekf/sensor_noise.hpp"
 #include "estimator/ekf/state_layout.hpp"
@@ -78,11 +79,16 @@ class ErrorStateFilter {
   /// Sets the correlated error's level from a fix's stated sigma (its
   /// tuning fraction): at once (and P with it) when dt_s <= 0, else averaged.
   void set_gps_bias_sigma(const Eigen::Vector3d& fix_sigma_ned_m, double dt_s);
-  /// The position was just set from a fix with this sigma: its error is the
-  /// fix's (the receiver's correlated error and white noise), and shares the
-  /// correlated part with the GPS-bias states (else the next fixes would count
-  /// that error twice).
-  void seed_position_from_fix(const Eigen::Vector3d& fix_sigma_ned_m);
+  /// The position was just set so that measurement `m` (a GNSS fix; its
+  /// position columns the identity) fits exactly: its error is then the
+  /// measurement's, e_p = -(H_other e_other + w). It shares the receiver's
+  /// correlated error with the GPS-bias states and the lever arm turned by
+  /// the attitude error with the attitude; the latency's error times the
+  /// velocity is in its variance. (A sigma that is the fix's alone claimed,
+  /// after an in-motion start, a position known to 1 m along the track that
+  /// a latency 0.05 s off had put 4 m behind, and the next fix "taught" the
+  /// latency state a wrong value to 9 ms.)
+  void seed_position_from(const Measurement& m);
   Eigen::Vector3d mag_earth_field_n_uT() const { return view(Effect::MagEarthField).vec3(); }
   Eigen::Vector3d mag_hard_iron_b_uT() const { return view(Effect::MagHardIron).vec3(); }
   /// Soft-iron matrix I + D (identity without the mag_soft_iron states).

@@ -275,7 +275,7 @@ void Navigator::align(const ImuSample& s, double dt) {
     }
     filter_.set_reference_temperature(res.temp_ref_degC);
     filter_.set_gps_bias_sigma(z.sigma_ned_m, 0.0);
-    filter_.seed_position_from_fix(z.sigma_ned_m);
+    seed_position_on_fix(z, s.t_s - (z.arrival_s - latency));
     recovery_.restart(s.t_s);
     vertical_.restart();
     heading_.restart();
@@ -500,28 +500,34 @@ void Navigator::recover(RecoveryAction action, const GnssObservation& z, double 
       release_gyro_bias_about_vertical();
     }
   }
-  if (action == RecoveryAction::ResetPosition) {
-    const Eigen::Vector3d lever_n = nav_.C_nb() * filter_.lever_arm_b_m();
-    const double rm = wgs84::meridian_radius_m(z.lat_rad) + z.h_m;
-    const double rn = wgs84::transverse_radius_m(z.lat_rad) + z.h_m;
-    // IMU position = antenna - C l, carried forward to the filter time.
-    const Eigen::Vector3d offset = -lever_n + nav_.v_n_m_s * dt_back;
-    nav_.lat_rad = z.lat_rad + offset.x() / rm;
-    nav_.lon_rad = wgs84::wrap_lon_rad(z.lon_rad + offset.y() / (rn * std::cos(z.lat_rad)));
-    nav_.h_m = z.h_m - offset.z();
-    filter_.reset_block(L.pos, z.sigma_ned_m);
-    if (L.has(Effect::GpsPositionBias)) {
-      filter_.reset_block(L.of(Effect::GpsPositionBias), filter_.gps_bias_sigma_ned_m());
-    }
-    ++counters_.position_resets;
-    events_ |= nav_flag::kPositionReset;
-  }
   if (z.has_velocity) {
     nav_.v_n_m_s.head<2>() = z.v_ne_m_s;
     filter_.reset_block(L.vel, sigma_v);
     ++counters_.velocity_resets;
     events_ |= nav_flag::kVelocityReset;
   }
+  if (action == RecoveryAction::ResetPosition) {
+    // On the fix: the receiver's correlated error starts again from its level.
+    if (L.has(Effect::GpsPositionBias)) {
+      filter_.reset_block(L.of(Effect::GpsPositionBias), filter_.gps_bias_sigma_ned_m());
+    }
+    seed_position_on_fix(z, dt_back);
+    ++counters_.position_resets;
+    events_ |= nav_flag::kPositionReset;
+  }
+}
+
+void Navigator::seed_position_on_fix(const GnssObservation& z, double dt_back) {
+  // The position that fits the fix exactly (the IMU = antenna - C l, carried
+  // forward from the fix's time), its covariance the fix's errors.
+  const Measurement m = gnss_position_measurement(filter_, nav_, dt_back, z, cfg_.gate_sigma);
+  const Eigen::Vector3d y = m.innovation;  // predicted - measured, NED [m]
+  const double rm = wgs84::meridian_radius_m(nav_.lat_rad) + nav_.h_m;
+  const double rn = wgs84::transverse_radius_m(nav_.lat_rad) + nav_.h_m;
+  nav_.lat_rad -= y.x() / rm;
+  nav_.lon_rad = wgs84::wrap_lon_rad(nav_.lon_rad - y.y() / (rn * std::cos(nav_.lat_rad)));
+  nav_.h_m += y.z();
+  filter_.seed_position_from(m);
 }
 
 void Navigator::fuse_magnetometer(const ImuSample& s) {

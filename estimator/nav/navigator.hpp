@@ -242,6 +242,8 @@ class Navigator {
   void check_heading(double t_meas);
   /// Widens the gyro bias about the vertical by heading_bias_widen_rad_s (P at now).
   void release_gyro_bias_about_vertical();
+  /// Sets the position (and its covariance) from fix z, taken at dt_back before now.
+  void seed_position_on_fix(const GnssObservation& z, double dt_back);
   /// The GNSS course's rate (moving, a fix within 1 s), else the INS heading's [rad/s].
   double turn_rate_rad_s(double t_s) const;
   void learn_position_scale(double t_meas);
