@@ -10,6 +10,7 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
+#include "estimator/nav/nav_health.hpp"
 #include "firmware/host/replay/replay_files.hpp"
 #include "host_tests/support/alloc_counter.hpp"
 #include "host_tests/support/nav_error.hpp"
@@ -230,6 +231,26 @@ TEST(Replay, ALargeHardIronIsTakenFromTheFirstFieldSample) {
     EXPECT_NEAR((*minute)[i + 1], truth[i], 2.0) << "a minute on, axis " << i;  // measured 0.3-0.7 (was 0.9-14.7)
   }
   EXPECT_EQ(read_json(out + "/summary.json")["rejected"]["magnetometer"].get<int>(), 0);
+}
+
+// The still flag (and, for a ground vehicle, the zero-velocity updates) took
+// a quiet IMU with no recent fix as standing: a steady leg at 35 m/s in a
+// 30-s GNSS gap was "still" for 17 and 28 s of it (an independent
+// simulator's fixed wing at 45 m/s: 6 s). Without a fix, the INS's own speed
+// must now be within 3 sigma of standing too.
+TEST(Replay, ASteadyLegInAGnssGapIsNotStandingStill) {
+  TempDir dir;
+  const std::string ds = simulate(dir, "f", 600);
+  const double t0 = first_t(ds);
+  const std::string out = dir.file("r");
+  const std::string outages = std::to_string(t0 + 300.0) + ":30," + std::to_string(t0 + 400.0) + ":30";
+  ASSERT_EQ(run_sinu({"replay", "--in", ds, "--outage", outages, "--nav-rate", "0", "--quiet", "--out", out}).exit_code, 0);
+  const ErrorSeries s = error_series(out + "/nav.csv", ds + "/truth.csv");
+  EXPECT_TRUE(flags_between(s, t0, t0 + 60.0) & est::nav_flag::kStill) << "standing before take-off";
+  for (const double start : {t0 + 300.0, t0 + 400.0}) {
+    EXPECT_TRUE(flags_between(s, start + 3.0, start + 30.0) & est::nav_flag::kGnssTimeout) << start - t0;
+    EXPECT_FALSE(flags_between(s, start, start + 30.0) & est::nav_flag::kStill) << "cruising, " << start - t0;
+  }
 }
 
 TEST(Replay, BadInputIsAUsageOrRuntimeErrorWithAMessage) {
