@@ -53,6 +53,7 @@ class NavUnit {
   const DenoiserSpec& denoiser() const { return denoiser_; }
   /// The time of validity of a fix that arrived at `arrival_s` (configured latency).
   double validity_time(double arrival_s) const { return arrival_s - cfg_.gps_latency_s; }
+  double configured_gps_latency_s() const { return cfg_.gps_latency_s; }
 
  private:
   NavUnitConfig cfg_;

@@ -80,14 +80,24 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
               num(r.rmse_pos_h_m()).c_str(), num(r.rmse_pos_v_m()).c_str(), num(r.rmse_vel_m_s()).c_str(),
               num(r.rmse_att_deg()).c_str(), num(m.compared).c_str(), num(r.gnss_rmse_pos_h_m()).c_str(),
               num(r.gnss_rmse_pos_v_m()).c_str());
+  if (m.gnss_compared > 0 && std::abs(r.gnss_latency_shift_s) > 0.005) {
+    std::printf("  GNSS alone: each fix at its time of validity as learnt (latency %.3f s); taken at the configured "
+                "%.3f s, pos_h %s m\n", r.configured_gps_latency_s + r.gnss_latency_shift_s, r.configured_gps_latency_s,
+                num(r.gnss_rmse_at_configured_pos_h_m()).c_str());
+  }
   if (r.truth_is_gnss_input()) {
     std::printf("  note: truth.csv is the GNSS input itself (GNSS alone %s m from it): the rmse above is the solution's "
                 "distance from its own fixes, not an accuracy; only GNSS outages (--outage) compare it with an "
                 "independent reference\n", num(r.gnss_rmse_pos_h_m()).c_str());
   }
   for (const replay::OutageDrift& o : m.outages) {
+    if (o.fixes_withheld == 0) {
+      std::printf("  outage %.1f s +%.0f s: NOTHING WITHHELD: no GNSS epoch inside it (the GNSS runs t=%.1f..%.1f s, the "
+                  "dataset's own clock)\n", o.window.start_s, o.window.duration_s, r.gnss.first_t_s, r.gnss.last_t_s);
+      continue;
+    }
     std::printf("  outage %.1f s +%.0f s: max horizontal drift %s m\n", o.window.start_s, o.window.duration_s,
-                o.points ? num(o.max_drift_h_m).c_str() : "n/a");
+                o.points ? num(o.max_drift_h_m).c_str() : "n/a (no truth point inside it)");
   }
   if (!m.outages.empty()) std::printf("  outage drift RMS %s m\n", num(r.outage_drift_rms_m()).c_str());
   const auto pos = static_cast<std::size_t>(est::AidingSource::GnssPosition);
@@ -137,6 +147,12 @@ int run(ReplayCliOptions& c) {
   }
   if (const std::string why_no_mag = result.mag_refused_reason(); !why_no_mag.empty())
     std::fprintf(stderr, "sinu replay: warning: magnetometer not used: %s\n", why_no_mag.c_str());
+  for (const replay::OutageDrift& o : result.metrics.outages) {
+    if (o.fixes_withheld > 0) continue;
+    std::fprintf(stderr, "sinu replay: warning: --outage %g:%g withholds nothing: no GNSS epoch inside it (the GNSS runs "
+                 "t=%.1f..%.1f s, the dataset's own clock)\n", o.window.start_s, o.window.duration_s,
+                 result.gnss.first_t_s, result.gnss.last_t_s);
+  }
   if (!c.quiet) print_summary(opt, result);
   return kExitOk;
 }

@@ -97,11 +97,15 @@ TEST(ReceiverWithoutGst, TheRealQuadcopterBeatsItsFixesAgainstThePeer) {
   SINU_REQUIRE_SHARED(uav, "data/real/uav_log171");
   TempDir dir;
   const auto s = replay_summary({"replay", "--in", without_gst(uav, dir.file("nogst")), "--quiet", "--out", dir.file("r")});
+  const auto stated = replay_summary({"replay", "--in", uav, "--quiet", "--out", dir.file("r_gst")});
   EXPECT_EQ(s["health"]["status"], "ok") << s["health"].dump();
   // HDOP 1.59 guesses 2.8 m; the learnt factor reaches its 0.2 floor (GST
-  // said 0.5-1 m). Against the autopilot's EKF: measured 0.46 m (with GST
-  // 0.43; the guess kept 0.81) against the fixes' 0.52 m.
-  EXPECT_LT(s["rmse"]["pos_h_m"].get<double>(), s["gnss_only_rmse"]["pos_h_m"].get<double>());
+  // said 0.5-1 m). Against the autopilot's EKF: measured 0.46 m against
+  // 0.43 m with GST (the guess kept: 0.81 m). The fixes themselves: 0.52 m
+  // taken as they come, 0.41 m each at the time of validity the filter
+  // learnt (0.26 s before its arrival; the peer fuses them at its own delay).
+  EXPECT_LT(s["rmse"]["pos_h_m"].get<double>(), 1.15 * stated["rmse"]["pos_h_m"].get<double>());
+  EXPECT_LT(s["rmse"]["pos_h_m"].get<double>(), s["gnss_only_rmse"]["pos_h_m_at_configured_latency"].get<double>());
 }
 
 TEST(ReceiverWithoutGst, TheRealDriveTakesItsRtkQualityAsStated) {

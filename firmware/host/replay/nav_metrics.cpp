@@ -26,7 +26,7 @@ void NavMetrics::init(const std::vector<Outage>& list, const Eigen::Vector3d& le
   lever_arm_b_m_ = lever_arm_b_m;
   outages.clear();
   outages.reserve(list.size());
-  for (const Outage& o : list) outages.push_back({o, 0.0, 0});
+  for (const Outage& o : list) outages.push_back({o, 0.0, 0, 0});
 }
 
 void NavMetrics::add_gnss(const GnssPoint& fix) {
@@ -48,9 +48,20 @@ void NavMetrics::score_gnss(const TruthPoint& a, const TruthPoint& b) {
     const Eigen::Vector3d dp((g.lat_rad - lat) * (w::meridian_radius_m(lat) + h) - lever_n.x(),
                              w::lon_difference_rad(g.lon_rad, lon) * (w::transverse_radius_m(lat) + h) * std::cos(lat) - lever_n.y(),
                              -(g.h_m - h) - lever_n.z());
+    // The truth's velocity here: a fix valid delta later than assumed errs by dp + v delta.
+    Eigen::Vector3d v = Eigen::Vector3d::Zero();
+    if (b.t_s > a.t_s) {
+      v = Eigen::Vector3d((b.lat_rad - a.lat_rad) * (w::meridian_radius_m(lat) + h),
+                          w::lon_difference_rad(b.lon_rad, a.lon_rad) * (w::transverse_radius_m(lat) + h) * std::cos(lat),
+                          -(b.h_m - a.h_m)) / (b.t_s - a.t_s);
+    }
     ++gnss_compared;
     gnss_sum_h2 += dp.head<2>().squaredNorm();
     gnss_sum_v2 += dp.z() * dp.z();
+    gnss_sum_hv += dp.head<2>().dot(v.head<2>());
+    gnss_sum_vv += dp.z() * v.z();
+    gnss_sum_v2h += v.head<2>().squaredNorm();
+    gnss_sum_v2v += v.z() * v.z();
   }
 }
 

@@ -32,6 +32,7 @@ struct OutageDrift {
   Outage window;
   double max_drift_h_m = 0.0;
   std::uint64_t points = 0;
+  std::uint64_t fixes_withheld = 0;  // GNSS epochs inside it (none: the window missed the data's clock)
 };
 
 /// A GNSS fix as the receiver gave it: the antenna at its time of validity.
@@ -55,6 +56,9 @@ class NavMetrics {
   double sum_h2 = 0.0, sum_v2 = 0.0, sum_vel2 = 0.0, sum_att2 = 0.0;
   std::uint64_t gnss_compared = 0;
   double gnss_sum_h2 = 0.0, gnss_sum_v2 = 0.0;
+  // For the fixes re-timed by delta (the latency the filter learnt against the
+  // configured one) afterwards: sum |dp + v delta|^2 = h2 + 2 delta hv + delta^2 v2h.
+  double gnss_sum_hv = 0.0, gnss_sum_vv = 0.0, gnss_sum_v2h = 0.0, gnss_sum_v2v = 0.0;
   ChiStats nees;
   // The same from kSettleS after the first solution on: the priors of a
   // fresh alignment (heading without the declination, tilt against the

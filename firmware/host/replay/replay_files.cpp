@@ -118,7 +118,8 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
   json outs = json::array();
   for (const OutageDrift& o : m.outages) {
     outs.push_back({{"start", o.window.start_s}, {"duration", o.window.duration_s},
-                    {"max_drift_h_m", o.points ? json(o.max_drift_h_m) : json(nullptr)}});
+                    {"max_drift_h_m", o.points ? json(o.max_drift_h_m) : json(nullptr)},
+                    {"fixes_withheld", o.fixes_withheld}});
   }
   sj["outages"] = outs;
   sj["outage_max_drift_h_rms_m"] = num(r.outage_drift_rms_m());
@@ -174,7 +175,10 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
                  {"gnss_position_scale_h", r.gnss_position_scale.x()},
                  {"gnss_position_scale_v", r.gnss_position_scale.y()}};
   sj["gnss_only_rmse"] = {{"pos_h_m", num(r.gnss_rmse_pos_h_m())}, {"pos_v_m", num(r.gnss_rmse_pos_v_m())},
-                          {"fixes", m.gnss_compared}, {"truth_is_gnss_input", r.truth_is_gnss_input()}};
+                          {"fixes", m.gnss_compared}, {"truth_is_gnss_input", r.truth_is_gnss_input()},
+                          {"latency_s", r.configured_gps_latency_s + r.gnss_latency_shift_s},
+                          {"latency_shift_s", r.gnss_latency_shift_s},
+                          {"pos_h_m_at_configured_latency", num(r.gnss_rmse_at_configured_pos_h_m())}};
   json sens = json::object();
   static constexpr const char* kAxes[] = {"ax", "ay", "az", "gx", "gy", "gz"};
   for (std::size_t a = 0; a < est::kSensorAxes; ++a) {

@@ -35,6 +35,8 @@ struct Excitation {
 struct GnssFeedCounters {
   std::uint64_t epochs = 0, used = 0, dropped_outage = 0, dropped_period = 0;
   std::uint64_t without_height = 0;  // a horizontal fix with no height (RMC or GLL without GGA): not used
+  std::uint64_t observations = 0;          // epochs with a position or a velocity the unit can use
+  double first_t_s = 0.0, last_t_s = 0.0;  // their validity times (when observations > 0)
 };
 
 /// What carried the unit: as configured, and with `auto` what the detector found.
@@ -84,7 +86,13 @@ struct ReplayResult {
   double rmse_pos_v_m() const;
   double rmse_vel_m_s() const;
   double rmse_att_deg() const;
+  // GNSS alone against truth, each fix at its time of validity: arrival
+  // minus the latency the filter learnt (configured + gnss_latency_shift_s).
+  double gnss_latency_shift_s = 0.0;
+  double configured_gps_latency_s = 0.0;
   double gnss_rmse_pos_h_m() const;
+  /// The same at arrival minus the configured latency (what the fixes give a user who takes them as they come).
+  double gnss_rmse_at_configured_pos_h_m() const;
   double gnss_rmse_pos_v_m() const;
   /// truth.csv holds the very fixes the filter was fed (an RTK log as its own
   /// reference): GNSS alone within 1 cm of it.

@@ -133,8 +133,12 @@ class UnitFeed final : public ReplayFeed {
     est::GnssObservation z;
     if (!unit_.observation(f, z)) return;
     const double t_valid = unit_.validity_time(z.arrival_s);
-    for (const Outage& o : opt_.outages) {
-      if (t_valid >= o.start_s && t_valid < o.start_s + o.duration_s) {
+    if (gnss.observations == 0) gnss.first_t_s = t_valid;
+    ++gnss.observations;
+    gnss.last_t_s = t_valid;
+    for (OutageDrift& o : metrics_.outages) {
+      if (t_valid >= o.window.start_s && t_valid < o.window.start_s + o.window.duration_s) {
+        ++o.fixes_withheld;
         ++gnss.dropped_outage;
         return;
       }
@@ -178,6 +182,9 @@ void collect(const board::NavUnit& unit, ReplayResult& r) {
   r.denoiser = d.wavelet ? d.name + ":" + std::to_string(d.levels) : "none";
   if (nav.filter().noise().kind == est::NoiseModelKind::AutoRegressive)
     r.ar_rate_hz = 1.0 / nav.filter().noise().ar_sample_period_s;
+  r.configured_gps_latency_s = unit.configured_gps_latency_s();
+  r.gnss_latency_shift_s =
+      f.layout().has(est::Effect::GpsLatency) && nav.aligned() ? f.gps_latency_s() - unit.configured_gps_latency_s() : 0.0;
   r.effects.clear();
   for (std::size_t e = 0; e < est::kEffectCount; ++e) {
     const auto ef = static_cast<est::Effect>(e);
