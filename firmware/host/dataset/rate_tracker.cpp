@@ -9,7 +9,10 @@ constexpr double kGapFactor = 1.5;  // an interval this many nominal periods lon
 }
 
 void RateTracker::classify(double dt, double t_end) {
-  if (dt > kGapFactor * period_) {
+  if (dt <= kGapFactor * period_) {
+    ++regular_;
+    regular_sum_s_ += dt;
+  } else {
     ++gaps_;
     if (dt > longest_) {
       longest_ = dt;
