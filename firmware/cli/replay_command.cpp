@@ -80,7 +80,7 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
               num(r.rmse_pos_h_m()).c_str(), num(r.rmse_pos_v_m()).c_str(), num(r.rmse_vel_m_s()).c_str(),
               num(r.rmse_att_deg()).c_str(), num(m.compared).c_str(), num(r.gnss_rmse_pos_h_m()).c_str(),
               num(r.gnss_rmse_pos_v_m()).c_str());
-  if (m.gnss_compared > 0 && std::abs(r.gnss_latency_shift_s) > 0.005) {
+  if (m.gnss_compared > 0 && std::abs(r.gnss_latency_shift_s) > 0.005 && !r.truth_is_gnss_input()) {
     std::printf("  GNSS alone: each fix at its time of validity as learnt (latency %.3f s); taken at the configured "
                 "%.3f s, pos_h %s m\n", r.configured_gps_latency_s + r.gnss_latency_shift_s, r.configured_gps_latency_s,
                 num(r.gnss_rmse_at_configured_pos_h_m()).c_str());

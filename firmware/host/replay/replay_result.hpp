@@ -96,7 +96,7 @@ struct ReplayResult {
   double gnss_rmse_pos_v_m() const;
   /// truth.csv holds the very fixes the filter was fed (an RTK log as its own
   /// reference): GNSS alone within 1 cm of it.
-  bool truth_is_gnss_input() const { return gnss_rmse_pos_h_m() < 0.01; }
+  bool truth_is_gnss_input() const { return gnss_rmse_at_configured_pos_h_m() < 0.01; }
   /// RMS over the scored outages of the maximum horizontal drift; NaN if none was scored.
   double outage_drift_rms_m() const;
   const EffectEstimate* effect(est::Effect e) const;
