@@ -270,12 +270,7 @@ void ErrorStateFilter::start_mag_field(const NavState& nav, const Eigen::Vector3
 
 void ErrorStateFilter::feedback(StateVec& dx, NavState& nav) {
   const StateLayout& L = layout_;
-  const double rm = wgs84::meridian_radius_m(nav.lat_rad) + nav.h_m;
-  const double rn = wgs84::transverse_radius_m(nav.lat_rad) + nav.h_m;
-  const Eigen::Vector3d dp = dx.segment(L.pos.start, 3);
-  nav.lat_rad -= dp.x() / rm;
-  nav.lon_rad = wgs84::wrap_lon_rad(nav.lon_rad - dp.y() / (rn * std::cos(nav.lat_rad)));
-  nav.h_m += dp.z();
+  nav.move_position_m(-dx.segment(L.pos.start, 3));
   nav.v_n_m_s -= dx.segment(L.vel.start, 3);
   nav.q_nb = (quat_from_rotation_vector(dx.segment(L.att.start, 3)) * nav.q_nb).normalized();
   sensor_hat_ += dx.segment(L.sensor.start, L.sensor.size);

@@ -4,6 +4,9 @@
 // WGS-84 geodetic position.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cmath>
+
+#include "estimator/earth/wgs84.hpp"
 
 namespace sinu::est {
 
@@ -16,6 +19,14 @@ struct NavState {
   double h_m = 0.0;
 
   Eigen::Matrix3d C_nb() const { return q_nb.toRotationMatrix(); }
+  /// Moves the position by d_ned_m (north, east, down metres, small against the Earth's radii).
+  void move_position_m(const Eigen::Vector3d& d_ned_m) {
+    const double rm = wgs84::meridian_radius_m(lat_rad) + h_m;
+    const double rn = wgs84::transverse_radius_m(lat_rad) + h_m;
+    lat_rad += d_ned_m.x() / rm;
+    lon_rad = wgs84::wrap_lon_rad(lon_rad + d_ned_m.y() / (rn * std::cos(lat_rad)));
+    h_m -= d_ned_m.z();
+  }
 };
 
 }  // namespace sinu::est

@@ -521,12 +521,7 @@ void Navigator::seed_position_on_fix(const GnssObservation& z, double dt_back) {
   // The position that fits the fix exactly (the IMU = antenna - C l, carried
   // forward from the fix's time), its covariance the fix's errors.
   const Measurement m = gnss_position_measurement(filter_, nav_, dt_back, z, cfg_.gate_sigma);
-  const Eigen::Vector3d y = m.innovation;  // predicted - measured, NED [m]
-  const double rm = wgs84::meridian_radius_m(nav_.lat_rad) + nav_.h_m;
-  const double rn = wgs84::transverse_radius_m(nav_.lat_rad) + nav_.h_m;
-  nav_.lat_rad -= y.x() / rm;
-  nav_.lon_rad = wgs84::wrap_lon_rad(nav_.lon_rad - y.y() / (rn * std::cos(nav_.lat_rad)));
-  nav_.h_m += y.z();
+  nav_.move_position_m(-Eigen::Vector3d(m.innovation));  // predicted - measured, NED [m]
   filter_.seed_position_from(m);
 }
 

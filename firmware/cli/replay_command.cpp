@@ -32,6 +32,14 @@ std::string num(double v) {
 }
 std::string num(std::uint64_t v) { return std::to_string(v); }
 
+/// Why an --outage window withheld no fix (the summary line and the warning).
+std::string nothing_withheld(const replay::ReplayResult& r) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "no GNSS epoch inside it (the GNSS runs t=%.1f..%.1f s, the dataset's own clock)",
+                r.gnss.first_t_s, r.gnss.last_t_s);
+  return buf;
+}
+
 void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult& r) {
   const est::NavCounters& c = r.counters;
   const replay::NavMetrics& m = r.metrics;
@@ -92,8 +100,8 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
   }
   for (const replay::OutageDrift& o : m.outages) {
     if (o.fixes_withheld == 0) {
-      std::printf("  outage %.1f s +%.0f s: NOTHING WITHHELD: no GNSS epoch inside it (the GNSS runs t=%.1f..%.1f s, the "
-                  "dataset's own clock)\n", o.window.start_s, o.window.duration_s, r.gnss.first_t_s, r.gnss.last_t_s);
+      std::printf("  outage %.1f s +%.0f s: NOTHING WITHHELD: %s\n", o.window.start_s, o.window.duration_s,
+                  nothing_withheld(r).c_str());
       continue;
     }
     std::printf("  outage %.1f s +%.0f s: max horizontal drift %s m\n", o.window.start_s, o.window.duration_s,
@@ -149,9 +157,8 @@ int run(ReplayCliOptions& c) {
     std::fprintf(stderr, "sinu replay: warning: magnetometer not used: %s\n", why_no_mag.c_str());
   for (const replay::OutageDrift& o : result.metrics.outages) {
     if (o.fixes_withheld > 0) continue;
-    std::fprintf(stderr, "sinu replay: warning: --outage %g:%g withholds nothing: no GNSS epoch inside it (the GNSS runs "
-                 "t=%.1f..%.1f s, the dataset's own clock)\n", o.window.start_s, o.window.duration_s,
-                 result.gnss.first_t_s, result.gnss.last_t_s);
+    std::fprintf(stderr, "sinu replay: warning: --outage %g:%g withholds nothing: %s\n", o.window.start_s,
+                 o.window.duration_s, nothing_withheld(result).c_str());
   }
   if (!c.quiet) print_summary(opt, result);
   return kExitOk;

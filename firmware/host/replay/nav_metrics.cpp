@@ -56,12 +56,8 @@ void NavMetrics::score_gnss(const TruthPoint& a, const TruthPoint& b) {
                           -(b.h_m - a.h_m)) / (b.t_s - a.t_s);
     }
     ++gnss_compared;
-    gnss_sum_h2 += dp.head<2>().squaredNorm();
-    gnss_sum_v2 += dp.z() * dp.z();
-    gnss_sum_hv += dp.head<2>().dot(v.head<2>());
-    gnss_sum_vv += dp.z() * v.z();
-    gnss_sum_v2h += v.head<2>().squaredNorm();
-    gnss_sum_v2v += v.z() * v.z();
+    gnss_h.add(dp.head<2>(), v.head<2>());
+    gnss_v.add(dp.tail<1>(), v.tail<1>());
   }
 }
 

@@ -35,6 +35,19 @@ struct OutageDrift {
   std::uint64_t fixes_withheld = 0;  // GNSS epochs inside it (none: the window missed the data's clock)
 };
 
+/// sum |dp + v delta|^2 over the fixes (dp: fix minus truth, v: the truth's
+/// velocity), for any delta chosen afterwards: the fixes re-timed by the
+/// latency the filter learnt against the configured one.
+struct RetimedSquares {
+  double dp2 = 0.0, dp_v = 0.0, v2 = 0.0;
+  template <class Dp, class V> void add(const Dp& dp, const V& v) {
+    dp2 += dp.squaredNorm();
+    dp_v += dp.dot(v);
+    v2 += v.squaredNorm();
+  }
+  double at(double delta_s) const { return dp2 + 2.0 * delta_s * dp_v + delta_s * delta_s * v2; }
+};
+
 /// A GNSS fix as the receiver gave it: the antenna at its time of validity.
 struct GnssPoint {
   double t_s = 0.0;
@@ -55,10 +68,7 @@ class NavMetrics {
   std::uint64_t compared = 0, compared_att = 0, compared_vel = 0;
   double sum_h2 = 0.0, sum_v2 = 0.0, sum_vel2 = 0.0, sum_att2 = 0.0;
   std::uint64_t gnss_compared = 0;
-  double gnss_sum_h2 = 0.0, gnss_sum_v2 = 0.0;
-  // For the fixes re-timed by delta (the latency the filter learnt against the
-  // configured one) afterwards: sum |dp + v delta|^2 = h2 + 2 delta hv + delta^2 v2h.
-  double gnss_sum_hv = 0.0, gnss_sum_vv = 0.0, gnss_sum_v2h = 0.0, gnss_sum_v2v = 0.0;
+  RetimedSquares gnss_h, gnss_v;  // horizontal, vertical
   ChiStats nees;
   // The same from kSettleS after the first solution on: the priors of a
   // fresh alignment (heading without the declination, tilt against the

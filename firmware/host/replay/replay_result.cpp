@@ -78,16 +78,11 @@ double ReplayResult::rmse_pos_h_m() const { return rms(metrics.sum_h2, metrics.c
 double ReplayResult::rmse_pos_v_m() const { return rms(metrics.sum_v2, metrics.compared); }
 double ReplayResult::rmse_vel_m_s() const { return rms(metrics.sum_vel2, metrics.compared_vel); }
 double ReplayResult::rmse_att_deg() const { return rms(metrics.sum_att2, metrics.compared_att) * 180.0 / std::numbers::pi; }
-double ReplayResult::gnss_rmse_pos_h_m() const {
-  // truth.csv holding the fixes themselves (the real drive): as they came.
-  const double d = truth_is_gnss_input() ? 0.0 : gnss_latency_shift_s;
-  return rms(metrics.gnss_sum_h2 + 2.0 * d * metrics.gnss_sum_hv + d * d * metrics.gnss_sum_v2h, metrics.gnss_compared);
-}
-double ReplayResult::gnss_rmse_at_configured_pos_h_m() const { return rms(metrics.gnss_sum_h2, metrics.gnss_compared); }
-double ReplayResult::gnss_rmse_pos_v_m() const {
-  const double d = truth_is_gnss_input() ? 0.0 : gnss_latency_shift_s;
-  return rms(metrics.gnss_sum_v2 + 2.0 * d * metrics.gnss_sum_vv + d * d * metrics.gnss_sum_v2v, metrics.gnss_compared);
-}
+// truth.csv holding the fixes themselves (the real drive): as they came.
+double ReplayResult::gnss_retiming_s() const { return truth_is_gnss_input() ? 0.0 : gnss_latency_shift_s; }
+double ReplayResult::gnss_rmse_pos_h_m() const { return rms(metrics.gnss_h.at(gnss_retiming_s()), metrics.gnss_compared); }
+double ReplayResult::gnss_rmse_at_configured_pos_h_m() const { return rms(metrics.gnss_h.at(0.0), metrics.gnss_compared); }
+double ReplayResult::gnss_rmse_pos_v_m() const { return rms(metrics.gnss_v.at(gnss_retiming_s()), metrics.gnss_compared); }
 
 double ReplayResult::outage_drift_rms_m() const {
   double sum = 0.0;

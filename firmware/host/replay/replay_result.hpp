@@ -90,6 +90,7 @@ struct ReplayResult {
   // minus the latency the filter learnt (configured + gnss_latency_shift_s).
   double gnss_latency_shift_s = 0.0;
   double configured_gps_latency_s = 0.0;
+  double gnss_retiming_s() const;  // the shift applied (none when truth.csv is the fixes themselves)
   double gnss_rmse_pos_h_m() const;
   /// The same at arrival minus the configured latency (what the fixes give a user who takes them as they come).
   double gnss_rmse_at_configured_pos_h_m() const;
