@@ -11,9 +11,11 @@ named; then one known effect, drawn as `sinu simulate` draws it (its
 (tools/inject_effect.py) and the copy is diagnosed without truth, carrying
 the untouched log's effects as states (`--effects`, from the vocabulary's
 prior: the model files' sigmas come from this same data, once per pass).
-Right: the injected effect is named first (for effects the model carries,
-the defaults' `gps_latency` and `mag_hard_iron` and the log's own: nothing
-named, and the estimate moves by the injected value). Effects the log cannot
+Right: the injected effect is named first (for effects the model carries
+from zero, `mag_hard_iron` and the log's own: nothing named, and the
+estimate moves by the injected value; for those it carries from a configured
+value, `gps_latency` and a lever arm the log has, whose configuration for the
+copies is the untouched log's estimate: named as a configured value off). Effects the log cannot
 test are skipped, as diagnose itself says ("not tested": no magnetometer,
 the irons; temperature within 2 degC, the temperature coefficients). The error against the log's own reference
 (the autopilot's EKF, or the car's RTK) is given for a replay with the log's
@@ -97,7 +99,7 @@ def without_truth(log, dst):
             os.symlink(os.path.abspath(os.path.join(log, f)), os.path.join(dst, f))
 
 
-def evaluate(sinu, work, log, base_args, base_estimates, nav, effect, seed, value):
+def evaluate(sinu, work, log, base_args, base_estimates, base_carried, nav, effect, seed, value):
     name = os.path.basename(log.rstrip("/"))
     case = os.path.join(work, f"{name}_{effect}_{seed}")
     fx = case + "_effects.json"
@@ -107,7 +109,11 @@ def evaluate(sinu, work, log, base_args, base_estimates, nav, effect, seed, valu
     diag = case + "_diag"
     run([sinu, "diagnose", "--in", case, "--rounds", "1", "--threads", "1", "--quiet", "--apply", "--out", diag]
         + base_args)
-    named = json.load(open(os.path.join(diag, "diagnosis.json"))).get("missing_effects", [])
+    dj = json.load(open(os.path.join(diag, "diagnosis.json")))
+    named = dj.get("missing_effects", [])
+    # Carried and far from the assumed value: what the untouched log had too (its hard iron) is the unit's.
+    named += [f["effect"] for f in dj.get("carried_findings", [])
+              if f["effect"] not in named and f["effect"] not in base_carried]
     truth = os.path.join(log, "truth.csv")
     row = {"log": name, "effect": effect, "seed": seed, "named": named}
     before = replay(sinu, case, truth, base_args, diag + "_r0")
@@ -119,8 +125,13 @@ def evaluate(sinu, work, log, base_args, base_estimates, nav, effect, seed, valu
     return row
 
 
+# Carried from a configured value (the copies' is the untouched log's estimate): a copy
+# that moves it is right when diagnose names it as a configured value off.
+CONFIGURED = {"gps_latency", "lever_arm"}
+
+
 def right(row, carried):
-    if row["effect"] in carried:
+    if row["effect"] in carried and row["effect"] not in CONFIGURED:
         return not row["named"]
     return bool(row["named"]) and row["named"][0] == row["effect"]
 
@@ -163,14 +174,23 @@ def main():
             if not new:
                 break
         skipped = untestable(f"{plain}_diag0")
+        # Carried properties the untouched log already has that no option configures (its hard iron).
+        base_carried = {f["effect"] for f in json.load(open(f"{plain}_diag0/diagnosis.json")).get("carried_findings", [])
+                        } - CONFIGURED
         bases[name] = (named, skipped)
         base_args = ["--effects", ",".join(named)] if named else []
+        base_estimates = replay(a.sinu, plain, os.path.join(log, "truth.csv"), base_args, base + "_replay")[2]
+        # The unit's own latency (and lever arm, when it has one) are the copies' configuration.
+        if "gps_latency" in base_estimates:
+            base_args += ["--gps-latency", f"{base_estimates['gps_latency'][0][0]:.4f}"]
+        if "lever_arm" in base_estimates:
+            base_args += ["--lever-arm", ",".join(f"{v:.4f}" for v in base_estimates["lever_arm"][0])]
         base_estimates = replay(a.sinu, plain, os.path.join(log, "truth.csv"), base_args, base + "_replay")[2]
         for effect in EFFECTS:
             if effect in skipped:
                 continue
             for seed, value in drawn[effect]:
-                jobs.append((log, base_args, base_estimates,
+                jobs.append((log, base_args, base_estimates, base_carried,
                              os.path.join(base, "baseline", "nav.csv"), effect,
                              seed, value))
     rows = []
@@ -217,7 +237,7 @@ def main():
             b = [r.get("before") or (None, None) for r in es]
             f = [r.get("after") or (None, None) for r in es]
             z = med(r.get("moved_z") for r in es)
-            out.append(f"| `{e}` | {'nothing named (carried)' if e in carried else 'named first'} | {len(es)} | {ok} | "
+            out.append(f"| `{e}` | {('named as configured value off (carried)' if e in CONFIGURED else 'nothing named (carried)') if e in carried else 'named first'} | {len(es)} | {ok} | "
                        f"{', '.join(f'{n} x{c}' for n, c in instead.most_common()) or '-'} | "
                        f"{num(z, '.1f')} | {num(med(x[0] for x in b), '.3f')} / {num(med(x[0] for x in f), '.3f')} | "
                        f"{num(med(x[1] for x in b), '.2f')} / {num(med(x[1] for x in f), '.2f')} |")

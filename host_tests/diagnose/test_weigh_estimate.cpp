@@ -67,5 +67,59 @@ TEST(WeighEstimate, ASoftIronsCommonScaleIsNoEvidence) {
   EXPECT_TRUE(diff.explains(3.0));
 }
 
+// A carried property of the unit (latency, lever arm from the configured value,
+// hard iron from zero) is a finding when the flight puts it 3 sigma and the
+// effect's report_resolution (25 ms, 10 cm, 1 uT) from the assumed value.
+// Latencies from the evaluation (tools/diagnose_eval.py, configured 0.05 s):
+// with the effects named, flights without a hidden latency end at 0.039-0.046
+// s +-0.003-0.006 (in the baseline, before the effect, up to 0.033 s away: a
+// misfit moves it); a hidden 0.10 s learnt 0.149 s; the independent
+// simulator's receiver, 0.05 s later than configured, 0.094-0.100 s.
+TEST(CarriedFindings, ALatencyFarFromTheConfiguredOneIsNamedAndANearOneIsNot) {
+  DiagnoseOptions o;
+  o.replay.unit.gps_latency_s = 0.05;
+  auto find = [&](double estimate, const est::EffectSet& skip = {}) {
+    const std::vector<replay::EffectEstimate> e{{est::Effect::GpsLatency, {estimate}, {0.003}}};
+    return diagnose::carried_findings(e, skip, o);
+  };
+  EXPECT_TRUE(find(0.039).empty()) << "3.7 sigma but 11 ms";
+  EXPECT_EQ(find(0.094).size(), 1u) << "44 ms: 1.8 m along the track at 40 m/s";
+  const auto f = find(0.149);
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_NEAR(f[0].deviation, 0.099, 1e-12);
+  EXPECT_NEAR(f[0].significance, 33.0, 1e-9);
+  EXPECT_EQ(f[0].assumed, std::vector<double>{0.05});
+  est::EffectSet named;
+  named.add(est::Effect::GpsLatency);
+  EXPECT_TRUE(find(0.149, named).empty()) << "already named otherwise";
+}
+
+// A lever arm is judged on the components the flight determined: an axis left
+// at its prior sigma may sit far from the configuration without a finding.
+TEST(CarriedFindings, ALeverArmIsJudgedOnTheDeterminedComponents) {
+  DiagnoseOptions o;
+  o.replay.unit.lever_arm_b_m = Eigen::Vector3d(0.3, 0.0, 0.0);
+  const auto undetermined =
+      diagnose::carried_findings({{est::Effect::LeverArm, {0.32, 0.9, 0.0}, {0.02, 0.9, 0.02}}}, {}, o);
+  EXPECT_TRUE(undetermined.empty());
+  const auto moved = diagnose::carried_findings({{est::Effect::LeverArm, {0.32, 0.9, -0.25}, {0.02, 0.9, 0.02}}}, {}, o);
+  ASSERT_EQ(moved.size(), 1u);
+  EXPECT_NEAR(moved[0].deviation, 0.25, 1e-12);
+}
+
+// The hard iron is carried from zero (nothing configures it): the evaluation's
+// clean flights ended within 0.11 uT of zero (sigma 0.04-0.17), a hidden
+// [-28.8, -16.3, -25.9] uT was learnt to 0.1 uT.
+TEST(CarriedFindings, AnAirframesHardIronIsToldAndASmallOneIsNot) {
+  const DiagnoseOptions o;
+  EXPECT_TRUE(diagnose::carried_findings({{est::Effect::MagHardIron, {-0.07, -0.01, 0.0}, {0.05, 0.17, 0.06}}}, {}, o)
+                  .empty());
+  const auto f =
+      diagnose::carried_findings({{est::Effect::MagHardIron, {-28.78, -16.19, -25.87}, {0.14, 0.15, 0.06}}}, {}, o);
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_NEAR(f[0].deviation, 28.78, 1e-9);
+  EXPECT_EQ(f[0].assumed, (std::vector<double>{0.0, 0.0, 0.0}));
+}
+
 }  // namespace
 }  // namespace sinu::test

@@ -75,6 +75,11 @@ struct EffectSpec {
   Triad excited_by = Triad::None;   // the input that reveals it: component k (column k of a 3x3) by that axis
   Needs needs = Needs::Nothing;
   const char* revealed_by = nullptr;  // what reveals it where no single sensor axis does (diagnose's advice)
+  // A property of the unit the model carries from an assumed value (the
+  // configured latency and lever arm, a hard iron of zero): the smallest
+  // deviation from it worth telling the user [state unit]; 0: never told. A
+  // flight that puts the effect this far (and 3 sigma) from it is a diagnosis.
+  double report_resolution = 0.0;
 };
 
 inline constexpr double kRadToDeg = 57.29577951308232;

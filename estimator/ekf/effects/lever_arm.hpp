@@ -8,9 +8,10 @@
 namespace sinu::est::effects {
 
 struct LeverArm {
+  // A configuration 10 cm off matters against a decimetre receiver (the configured value is --lever-arm)
   static constexpr EffectSpec spec{Effect::LeverArm, "lever_arm", Components::Xyz, "m", 1.0, 1.0, 0.0, true, 3.0,
                                    Triad::None, Triad::None, Needs::Nothing,
-                                   "turns (the arm's velocity w x l) and a level attitude change"};
+                                   "turns (the arm's velocity w x l) and a level attitude change", 0.1};
   /// Position: the predicted antenna is C l further; d(C_hat l)/dphi = [C l x], d/dl = -C.
   template <class T> static void gnss_position(EffectView v, T& t) {
     const Eigen::Vector3d lever_n = t.C * v.vec3();

@@ -139,6 +139,14 @@ bool outage_drifts(replay::ReplayOptions opt, const std::vector<replay::Outage>&
   return true;
 }
 
+/// What the model assumes of component k without the effect's states: the
+/// configured latency and lever arm, zero otherwise.
+double assumed_value(est::Effect effect, std::size_t k, const DiagnoseOptions& o) {
+  if (effect == est::Effect::GpsLatency) return o.replay.unit.gps_latency_s;
+  if (effect == est::Effect::LeverArm) return o.replay.unit.lever_arm_b_m(static_cast<Eigen::Index>(k));
+  return 0.0;
+}
+
 }  // namespace
 
 std::string untestable_reason(est::Effect effect, const replay::Excitation& x) {
@@ -153,6 +161,30 @@ std::string untestable_reason(est::Effect effect, const replay::Excitation& x) {
     case est::Needs::Nothing: return "";
   }
   return "";
+}
+
+std::vector<CarriedFinding> carried_findings(const std::vector<replay::EffectEstimate>& effects,
+                                             const est::EffectSet& skip, const DiagnoseOptions& o) {
+  std::vector<CarriedFinding> out;
+  for (const replay::EffectEstimate& e : effects) {
+    const double resolution = est::spec(e.effect).report_resolution;
+    if (!(resolution > 0.0) || skip.has(e.effect)) continue;
+    CarriedFinding f;
+    f.effect = e.effect;
+    for (std::size_t k = 0; k < e.estimate.size(); ++k) {
+      const double assumed = assumed_value(e.effect, k, o), d = std::abs(e.estimate[k] - assumed);
+      f.assumed.push_back(assumed);
+      f.estimate.push_back(e.estimate[k]);
+      f.sigma.push_back(e.sigma[k]);
+      // Judged on the components the flight determined (an unexcited axis keeps its prior sigma).
+      if (e.sigma[k] > 0.0 && d >= o.min_significance * e.sigma[k]) {
+        f.significance = std::max(f.significance, d / e.sigma[k]);
+        f.deviation = std::max(f.deviation, d);
+      }
+    }
+    if (f.deviation >= resolution) out.push_back(std::move(f));
+  }
+  return out;
 }
 
 void weigh_estimate(const replay::EffectEstimate& eff, const est::EffectPrior& file, const DiagnoseOptions& o,
@@ -172,9 +204,7 @@ void weigh_estimate(const replay::EffectEstimate& eff, const est::EffectPrior& f
     // Distance from what the model assumed without the states (the configured latency
     // and lever arm, zero otherwise), in sigmas; for a model-file effect
     // learnt again, from the file's value in both sigmas.
-    double prior = 0.0;
-    if (effect == est::Effect::GpsLatency) prior = o.replay.unit.gps_latency_s;
-    if (effect == est::Effect::LeverArm) prior = o.replay.unit.lever_arm_b_m(static_cast<Eigen::Index>(k));
+    double prior = assumed_value(effect, k, o);
     if (effect == est::Effect::MagSoftIron && k < 3) prior = common_scale;
     if (c.changed) {
       c.file_estimate.push_back(file.value[k]);
@@ -440,6 +470,14 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     out.rounds.push_back(std::move(round));
     if (!out.rounds.back().found && !walk_round) break;
   }
+  // The unit's properties the final model carried (latency, lever arm, hard
+  // iron): its estimates against what was assumed. A model-file value is
+  // judged by its re-learnt candidate instead ("changed since").
+  est::EffectSet named_otherwise;
+  for (est::Effect e : out.missing) named_otherwise.add(e);
+  for (std::size_t e = 0; e < est::kEffectCount; ++e)
+    if (known[e].given) named_otherwise.add(static_cast<est::Effect>(e));
+  out.carried = carried_findings(current.effects, named_otherwise, o);
   out.noise_findings = noise_findings(current.stats, out.model_changed());
   // Candidates the last round could not pin down: say so, and what would.
   if (!out.rounds.empty()) {
@@ -464,6 +502,16 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     for (const replay::EffectEstimate& e : current.effects) {
       if (defaults.has(e.effect) || !model.has(e.effect)) continue;
       found.push_back({e.effect, e.estimate, e.sigma});
+    }
+    // A carried property goes in held to the resolution it is reported at, not
+    // this flight's sigma: an airframe's hard iron changes with its battery and
+    // payload, a receiver's latency with its settings, and the next flight's
+    // states must still follow them.
+    for (const CarriedFinding& f : out.carried) {
+      if (model.has(f.effect) && !defaults.has(f.effect)) continue;  // written above
+      std::vector<double> sigma = f.sigma;
+      for (double& s : sigma) s = std::max(s, est::spec(f.effect).report_resolution);
+      found.push_back({f.effect, f.estimate, sigma});
     }
     if (!board::write_model_file(o.apply_path, found, "sinu diagnose " + o.replay.in_dir, error)) return false;
     out.model_file = o.apply_path;

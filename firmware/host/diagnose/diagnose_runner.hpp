@@ -99,6 +99,25 @@ struct BiasWalkFinding {
   bool named = false;      // beyond the threshold and twice the best effect's gain
 };
 
+/// A property of the unit the model carries (EffectSpec::report_resolution:
+/// the receiver's latency and the antenna's lever arm from their configured
+/// values, the airframe's hard iron from zero) that this flight put far from
+/// what was assumed. Not missing (its states followed it, the solution is not
+/// hurt), but the user must learn it: named, and --apply writes it, so the
+/// next flight starts from it (a heading right before the first turn).
+struct CarriedFinding {
+  est::Effect effect{};
+  std::vector<double> assumed, estimate, sigma;  // assumed: the configured value, or 0 where none is configured
+  double significance = 0.0;  // the largest |estimate - assumed| / sigma
+  double deviation = 0.0;     // the largest |estimate - assumed| [state unit]
+};
+
+/// The carried effects (a replay's `effects`: every state it had) with a
+/// report_resolution whose estimate lies at least `min_significance` sigma and
+/// that resolution from the assumed value; `skip`: effects named otherwise.
+std::vector<CarriedFinding> carried_findings(const std::vector<replay::EffectEstimate>& effects,
+                                             const est::EffectSet& skip, const DiagnoseOptions& o);
+
 struct Diagnosis {
   double mag_sigma_uT = 0.0;         // the magnetometer sigma used (tuned from the baseline's NIS)
   double mag_sigma_given_uT = 0.0;   // as configured
@@ -108,6 +127,7 @@ struct Diagnosis {
   std::vector<Round> rounds;
   std::vector<est::Effect> missing;  // in the order found
   std::vector<est::Effect> changed;  // model-file effects this flight says have changed
+  std::vector<CarriedFinding> carried;  // carried effects this flight puts far from the assumed value
   BiasWalkFinding bias_walk;
   bool model_changed() const { return !missing.empty() || !changed.empty() || bias_walk.named; }
   struct Skipped {

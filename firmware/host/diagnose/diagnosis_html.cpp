@@ -553,7 +553,7 @@ constexpr const char* kScript = R"JS(<script>
 )JS";
 
 std::string conclusion_class(const Diagnosis& d) {
-  if (d.model_changed()) return "conclusion found";
+  if (d.model_changed() || !d.carried.empty()) return "conclusion found";
   return d.noise_findings.empty() ? "conclusion" : "conclusion noise";
 }
 

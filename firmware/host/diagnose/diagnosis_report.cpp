@@ -25,7 +25,7 @@ std::string diagnosis_summary(const DiagnoseOptions& o, const Diagnosis& d) {
   out += "  baseline model (" + effect_list(base.model) + "): fits worst in " + worst_cell(base.stats) + "\n";
   if (const std::string h = health_text(base.health); !h.empty()) out += "  baseline solution " + h + "\n";
   if (d.bias_walk.named) out += "  bias moved: " + bias_walk_text(d.bias_walk) + "\n";
-  else if (!d.model_changed()) {
+  else if (!d.model_changed() && d.carried.empty()) {
     out += "  no candidate effect explains the misfit (see report.md for each candidate's score)\n";
   }
   for (const Round& round : d.rounds) {
@@ -33,6 +33,7 @@ std::string diagnosis_summary(const DiagnoseOptions& o, const Diagnosis& d) {
       out += std::string(round.candidates.front().changed ? "  changed: " : "  missing effect: ") +
              missing_effect_text(round.candidates.front()) + "\n";
   }
+  for (const CarriedFinding& f : d.carried) out += "  carried: " + carried_finding_text(f) + "\n";
   for (const std::string& n : implausible_fits(d, o.min_significance)) out += "  not named: " + n + "\n";
   for (const std::string& n : d.noise_findings) out += "  noise: " + n + "\n";
   for (const Diagnosis::Skipped& s : d.skipped)
@@ -115,6 +116,19 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
   };
   j["missing_effects"] = names(d.missing);
   j["changed_effects"] = names(d.changed);
+  nlohmann::json carried_json = nlohmann::json::array();
+  if (!d.carried.empty()) {
+    md << "## Carried, and far from what was assumed\n\n"
+          "The model carries these effects as states from an assumed value (the configured latency and lever\n"
+          "arm, a hard iron of zero): they followed the data, so nothing is missing, but the unit has them.\n\n";
+    for (const CarriedFinding& f : d.carried) {
+      md << "- " << carried_finding_text(f) << "\n";
+      carried_json.push_back({{"effect", est::spec(f.effect).name}, {"assumed", f.assumed},
+                              {"estimate", f.estimate}, {"sigma", f.sigma}, {"significance", f.significance}});
+    }
+    md << "\n";
+  }
+  j["carried_findings"] = carried_json;
   nlohmann::json skipped = nlohmann::json::array();
   if (!d.skipped.empty()) {
     md << "## Not tested: the data cannot tell\n\n";
@@ -140,7 +154,7 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
                       {"best_effect_gain", d.bias_walk.best_effect_gain}, {"named", d.bias_walk.named}};
   }
   md << "## Conclusion\n\n```\n" << diagnosis_summary(o, d) << "```\n";
-  if (!d.model_changed()) {
+  if (!d.model_changed() && d.carried.empty()) {
     md << "\nNo effect the EKF can estimate explains the misfit. What the vocabulary does not cover: a\n"
           "magnetometer misfit beyond soft iron and a misalignment (a field that moves with the motors, a\n"
           "magnetometer sampled late), vibration rectification, a receiver whose error changes with the\n"

@@ -149,6 +149,26 @@ std::string missing_effect_text(const CandidateResult& c) {
          format_number("%.1f", c.nll_gain) + ", threshold " + format_number("%.1f", c.evidence_threshold) + ")";
 }
 
+std::string carried_finding_text(const CarriedFinding& f) {
+  const est::EffectSpec& sp = est::spec(f.effect);
+  std::string assumed, option;
+  for (std::size_t k = 0; k < f.assumed.size(); ++k) {
+    assumed += fmt::format("{}{:.4g}", k ? ", " : "", f.assumed[k] * sp.display_scale);
+    option += fmt::format("{}{:.3g}", k ? "," : "", f.estimate[k]);
+  }
+  if (f.assumed.size() > 1) assumed = "[" + assumed + "]";
+  // What to do: the option that configures it, or the model file alone.
+  std::string advice = "--apply writes it, so the next flight starts from it";
+  if (f.effect == est::Effect::GpsLatency) advice = "the configuration is wrong: --gps-latency " + option + " or --apply";
+  if (f.effect == est::Effect::LeverArm) advice = "the configuration is wrong: --lever-arm " + option + " or --apply";
+  if (f.effect == est::Effect::MagHardIron)
+    advice = "the airframe's own field; --apply writes it, so the next flight's heading is right before its first turn";
+  return fmt::format("{} = {}, assumed {} {} ({:.0f} sigma, {} {} off; the model carries it and its states followed "
+                     "it: {})",
+                     sp.name, vector_text(f.effect, f.estimate, f.sigma), assumed, sp.unit, f.significance,
+                     format_number("%.3g", f.deviation * sp.display_scale), sp.unit, advice);
+}
+
 std::string implausible_fit_text(const CandidateResult& c) {
   const est::EffectSpec& sp = est::spec(c.effect);
   return std::string(sp.name) + " would fit (log-likelihood +" + format_number("%.1f", c.nll_gain) + ") but only at " +
@@ -232,11 +252,16 @@ std::string conclusion_sentence(const Diagnosis& d) {
                        d.bias_walk.gyro ? "gyro" : "accelerometer", found.empty() ? "" : "; with its walk widened, " + found,
                        d.bias_walk.scale, found.empty() ? "" : " and the effects", before_after_text(d.rounds.front(), d.rounds.back()));
   }
+  std::string carried;
+  for (const CarriedFinding& f : d.carried)
+    carried += (carried.empty() ? " Carried, and far from what was assumed: " : "; ") + carried_finding_text(f);
+  if (!carried.empty()) carried += ".";
   if (!found.empty()) {
     const char* what = d.missing.empty() ? "Changed: " : d.missing.size() > 1 ? "Missing effects: " : "Missing effect: ";
     return what + found +
-           ". Error before -> after: " + before_after_text(d.rounds.front(), d.rounds.back()) + ".";
+           ". Error before -> after: " + before_after_text(d.rounds.front(), d.rounds.back()) + "." + carried;
   }
+  if (!carried.empty()) return carried.substr(1);
   const std::string error = error_text(d.rounds.back());
   if (d.noise_findings.empty())
     return "The model explains the data: no candidate effect raises the innovations' log-likelihood beyond the "

@@ -43,6 +43,9 @@ std::string candidate_name(const CandidateResult& c);
 /// "gyro_misalign = [...] mrad (innovation log-likelihood +104.0, threshold 4.6)";
 /// a changed one: "lever_arm has changed since the model file: [...] m, was [...] m (...)".
 std::string missing_effect_text(const CandidateResult& c);
+/// "gps_latency = 0.2348 +- 0.0031 s, assumed 0.05 s (60 sigma, 0.185 s off; ...)": a carried
+/// effect this flight put far from the assumed value, with what to do (the option that sets it).
+std::string carried_finding_text(const CarriedFinding& f);
 /// A candidate the data want only at a size no real unit has: "gyro_misalign
 /// would fit (log-likelihood +50.1) but only at 92 mrad, beyond the 35 mrad a real unit has: ...".
 std::string implausible_fit_text(const CandidateResult& c);
