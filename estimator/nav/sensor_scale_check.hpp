@@ -18,7 +18,11 @@
 //     magnetometer; it is counted and the navigation goes on without it.
 //   Gyro: its scatter over the last second at each GNSS epoch before the
 //     alignment that says the unit stands still while the accelerometer is
-//     quiet. A MEMS gyro at rest scatters below 0.03 rad/s (the real
+//     quiet, on the two axes across the specific force: standing still, a
+//     vehicle can only turn about the vertical (a quadcopter spinning on the
+//     spot at 90 deg/s scatters 0.3 rad/s about it while it speeds up), and
+//     any other turn moves gravity in the accelerometer; wrong units scatter
+//     every axis. A MEMS gyro at rest scatters below 0.03 rad/s (the real
 //     quadcopter 0.006, the real car with its engine idling 0.018-0.028, the
 //     simulator 0.0016); in deg/s it reads 57x (0.09-1.6). Its mean is no
 //     test: a turn-on bias can be tens of deg/s. Refused when every judged
@@ -86,7 +90,8 @@ class SensorScaleCheck {
   /// while it cannot be a gyro's in rad/s (the epoch must not align the
   /// unit), refused from then on once that has lasted gyro_persist_s.
   bool gyro_plausible(double t_s, double gnss_speed_m_s) {
-    const double accel_std = std::sqrt(scatter_.accel_var_m2_s4()), gyro_std = std::sqrt(scatter_.rate_var_rad2_s2());
+    const double accel_std = std::sqrt(scatter_.accel_var_m2_s4());
+    const double gyro_std = std::sqrt(scatter_.rate_var_across_f_rad2_s2());
     if (verdict_.gyro_refused) return false;
     if (!(gnss_speed_m_s < cfg_.still_max_speed_m_s) || !(accel_std < cfg_.still_max_accel_std_m_s2)) return true;
     verdict_.gyro_std_at_rest_rad_s = gyro_std;

@@ -2,6 +2,7 @@
 // samples: what it refuses, and what it must let through.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -54,6 +55,34 @@ TEST(SensorScaleCheck, ABriefScatterIsNotRefused) {
   EXPECT_FALSE(c.refused());
   EXPECT_TRUE(at_rest(c, 5.0, 0.003, rng));
   EXPECT_FALSE(c.refused());
+}
+
+// A quadcopter hovering (the GNSS says still, the accelerometer is quiet)
+// spins on the spot: 1 s up to 90 deg/s about the vertical, 3 s at it, 1 s
+// down, again and again (the independent simulator's quadcopter did this before
+// its first leg, and the check refused the unit for the rest of the flight).
+// Its rate scatters 0.45 rad/s about the vertical while it speeds up; across
+// gravity only the noise. The same gyro in deg/s is still refused.
+TEST(SensorScaleCheck, AHoverSpinAboutTheVerticalIsNotAUnitError) {
+  std::mt19937 rng(5);
+  std::normal_distribution<double> n(0.0, 1.0);
+  for (const double units : {1.0, 180.0 / M_PI}) {
+    SensorScaleCheck c;
+    c.configure({});
+    double t_s = 0.0;
+    bool ever_refused = false;
+    for (int i = 0; i < 6000; ++i) {  // 60 s: twelve 5-s spins
+      t_s += kDt;
+      const double phase = std::fmod(t_s, 5.0);
+      const double yaw_rate = M_PI / 2.0 * std::clamp(std::min(phase, 5.0 - phase), 0.0, 1.0);
+      const Eigen::Vector3d f(0.01 * n(rng), 0.01 * n(rng), -kG + 0.01 * n(rng));
+      const Eigen::Vector3d w = units * (0.003 * Eigen::Vector3d(n(rng), n(rng), n(rng)) + Eigen::Vector3d(0, 0, yaw_rate));
+      c.add_sample(f, w, kDt);
+      if (i % 20 == 0) c.gyro_plausible(t_s, 0.0);
+      ever_refused = ever_refused || c.refused();
+    }
+    EXPECT_EQ(ever_refused, units > 1.0) << "units " << units;
+  }
 }
 
 // Moving (the GNSS says so) or a shaking accelerometer: not judged at all.
