@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "estimator/wavelet/denoiser_select.hpp"
@@ -133,7 +134,15 @@ bool load_calib(const std::string& path, const CalibChoice& choice, est::SensorN
     if (choice.kind == est::NoiseModelKind::GaussMarkov) {
       if (!axis.contains("gm")) return fail(key + ".gm", "missing");
       double tau = 0.0, var = 0.0;
-      if (!number_at(axis["gm"], "tau_s", tau) || !(tau > 0.0)) return fail(key + ".gm.tau_s", "missing or not positive");
+      const nlohmann::json& gm = axis["gm"];
+      if (gm.contains("decays") && gm["decays"] == false && gm.contains("tau_s") && gm["tau_s"].is_null()) {
+        // The bench's autocorrelation never fell to 1/e (a warm-up's drift): a
+        // constant of that variance for this session, which the bias states'
+        // walk (the Allan rate random walk) carries beyond.
+        tau = std::numeric_limits<double>::infinity();
+      } else if (!number_at(gm, "tau_s", tau) || !(tau > 0.0)) {
+        return fail(key + ".gm.tau_s", "missing or not positive");
+      }
       if (!number_at(axis["gm"], "variance", var) || !(var >= 0.0)) return fail(key + ".gm.variance", "missing or negative");
       noise.gm[i] = {tau, var};
     } else {
