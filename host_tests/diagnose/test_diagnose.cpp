@@ -82,6 +82,17 @@ TEST(Diagnose, TheDefaultModelFollowsAHiddenGpsLatencyAndTellsTheUser) {
   EXPECT_DOUBLE_EQ(model["effects"]["gps_latency"]["estimate"][0].get<double>(), f["estimate"][0].get<double>());
   // Held to the 25 ms it is reported at (the next flight's state still follows a changed receiver).
   EXPECT_DOUBLE_EQ(model["effects"]["gps_latency"]["sigma"][0].get<double>(), 0.025);
+  // The next diagnosis starts from the model file: the latency is known, no finding, and --apply keeps it.
+  const std::string again = (dir.path() / "again").string();
+  const auto r = run_sinu({"diagnose", "--in", (dir.path() / "flight").string(), "--gps-latency", "0.045", "--rounds",
+                           "1", "--model-file", (dir.path() / "diag" / "model.json").string(), "--apply", "--quiet",
+                           "--out", again});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream d2(again + "/diagnosis.json"), m2(again + "/model.json");
+  EXPECT_EQ(nlohmann::json::parse(d2)["carried_findings"].size(), 0u);
+  const auto model2 = nlohmann::json::parse(m2);
+  ASSERT_TRUE(model2["effects"].contains("gps_latency")) << model2.dump(1);
+  EXPECT_NEAR(model2["effects"]["gps_latency"]["estimate"][0].get<double>(), 0.245, 0.02);
 }
 
 // The hard iron is always carried with a magnetometer (from zero; the first

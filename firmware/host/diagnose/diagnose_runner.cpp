@@ -495,12 +495,14 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
   if (out.rounds.empty() || out.rounds.back().found || out.bias_walk.named) out.rounds.push_back(last);
   if (!given.replay.outages.empty() && !outage_drifts(tuned.replay, given.replay.outages, out, error)) return false;
   if (!o.apply_path.empty()) {
-    // The final model's effects beyond the defaults, with the final run's
-    // estimates: the next flight (replay, diagnose, fly) starts from them.
+    // The final model's effects beyond the defaults (and the model file's, a
+    // default's value among them), with the final run's estimates: the next
+    // flight (replay, diagnose, fly) starts from them.
     std::vector<board::ModelEffect> found;
     const est::EffectSet defaults = board::default_effects();
     for (const replay::EffectEstimate& e : current.effects) {
-      if (defaults.has(e.effect) || !model.has(e.effect)) continue;
+      const bool from_file = known[static_cast<std::size_t>(e.effect)].given;
+      if ((defaults.has(e.effect) && !from_file) || !model.has(e.effect)) continue;
       found.push_back({e.effect, e.estimate, e.sigma});
     }
     // A carried property goes in held to the resolution it is reported at, not
@@ -508,7 +510,7 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     // payload, a receiver's latency with its settings, and the next flight's
     // states must still follow them.
     for (const CarriedFinding& f : out.carried) {
-      if (model.has(f.effect) && !defaults.has(f.effect)) continue;  // written above
+      if (model.has(f.effect) && !defaults.has(f.effect)) continue;  // written above (a model file's is never a finding)
       std::vector<double> sigma = f.sigma;
       for (double& s : sigma) s = std::max(s, est::spec(f.effect).report_resolution);
       found.push_back({f.effect, f.estimate, sigma});
