@@ -260,6 +260,7 @@ void Navigator::align(const ImuSample& s, double dt) {
     const GnssObservation z = gnss_.front();
     gnss_.pop();
     if (!scale_check_.gyro_plausible(s.t_s, z.has_velocity ? z.v_ne_m_s.norm() : NAN)) continue;
+    if (!z.has_height) continue;  // the INS starts from a 3-D fix
     if (!alignment_.add_gnss(z, s.t_s, res)) continue;
     if (!scale_check_.accel_plausible(wgs84::normal_gravity_m_s2(res.nav.lat_rad, res.nav.h_m))) return;
     alignment_result_ = res;
@@ -360,9 +361,16 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
         ok = fuse(AidingSource::GnssPosition, gnss_position_measurement(filter_, nav_, dt_back, z, cfg_.gate_sigma),
                   t_meas);
       }
-      if (z.sigma_is_guess) learn_position_scale(t_meas);
-      recover(recovery_.on_position(t_meas, ok, innovation_h, z.sigma_ned_m.head<2>().norm()), z, dt_back, t_meas);
-      check_vertical(z, t_meas);
+      // A fix without a height (its GGA missing or corrupt, or a receiver
+      // without one) is fused north and east; it neither resets the solution
+      // (a reset seeds the position from a 3-D fix) nor checks the vertical.
+      if (z.has_height) {
+        if (z.sigma_is_guess) learn_position_scale(t_meas);
+        recover(recovery_.on_position(t_meas, ok, innovation_h, z.sigma_ned_m.head<2>().norm()), z, dt_back, t_meas);
+        check_vertical(z, t_meas);
+      } else if (ok) {
+        ++counters_.horizontal_fixes;
+      }
     }
     if (z.has_velocity) {
       last_gnss_speed_m_s_ = z.v_ne_m_s.norm();

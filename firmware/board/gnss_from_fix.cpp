@@ -13,13 +13,13 @@ bool gnss_from_fix(const drivers::GpsFix& fix, const GnssSigmaConfig& cfg, est::
   constexpr int kRtkFixed = 4, kRtkFloat = 5;  // GGA fix quality
   if (!fix.has_position()) return false;
   const auto h = fix.ellipsoid_height_m();
-  if (!h) return false;
   out = {};
   out.arrival_s = fix.arrival_s;
   out.has_position = true;
   out.lat_rad = *fix.lat_deg * kDegToRad;
   out.lon_rad = *fix.lon_deg * kDegToRad;
-  out.h_m = *h;
+  out.has_height = h.has_value();  // RMC or GLL alone: north and east only (the navigator)
+  out.h_m = h.value_or(NAN);
   Eigen::Vector3d sig;
   if (fix.has_gst && fix.sigma_lat_m && fix.sigma_lon_m && fix.sigma_alt_m) {
     sig = {*fix.sigma_lat_m, *fix.sigma_lon_m, *fix.sigma_alt_m};

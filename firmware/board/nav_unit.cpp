@@ -89,9 +89,12 @@ bool NavUnit::push_fix(const drivers::GpsFix& fix) {
   fix_arrival_s_ = fix.arrival_s;
   fix_has_utc_ = fix.date.has_value();
   if (fix_has_utc_) fix_utc_ms_ = utc_epoch_ms(*fix.date, fix.utc_ms);
-  geoid_sep_m_ = fix.geoid_sep_m.value_or(0.0);
-  satellites_ = fix.sats.value_or(0);
-  hdop_ = fix.hdop.value_or(99.99);
+  // GGA's: an epoch without one (RMC alone, fused north and east) keeps the last.
+  if (fix.has_gga) {
+    geoid_sep_m_ = fix.geoid_sep_m.value_or(0.0);
+    satellites_ = fix.sats.value_or(0);
+    hdop_ = fix.hdop.value_or(99.99);
+  }
   return true;
 }
 

@@ -119,8 +119,9 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
   if (const std::string why_no_mag = r.mag_refused_reason(); !why_no_mag.empty())
     std::printf("  magnetometer NOT USED: %s\n", why_no_mag.c_str());
   if (r.gnss.without_height > 0 && r.gnss.used > 0)
-    std::printf("  GNSS: %s epoch(s) with a position but no height (their GGA missing or corrupt) not used\n",
-                num(r.gnss.without_height).c_str());
+    std::printf("  GNSS: %s epoch(s) with a position but no height (their GGA missing or corrupt): %s fused north and "
+                "east only\n",
+                num(r.gnss.without_height).c_str(), num(c.horizontal_fixes).c_str());
   if (c.imu_clipped_samples > 0 || c.imu_gaps > 0 || c.imu_invalid > 0 || c.imu_non_increasing > 0 || c.gnss_timeouts > 0) {
     std::printf("  faults: IMU clipped %s samples, %s gaps (longest %s s), %s dropped (NaN %s, time %s); GNSS timeouts %s "
                 "(%s s dead reckoning)\n",

@@ -10,6 +10,7 @@ struct GnssObservation {
   double arrival_s = 0.0;   // board time the epoch arrived
   bool has_position = false;
   double lat_rad = 0.0, lon_rad = 0.0, h_m = 0.0;  // antenna, WGS-84 ellipsoidal
+  bool has_height = true;  // false: a horizontal fix (RMC or GLL without GGA), h_m NaN
   Eigen::Vector3d sigma_ned_m = Eigen::Vector3d::Constant(3.0);
   bool sigma_is_guess = false;  // not the receiver's statement (no GST: DOP x UERE): the navigator rescales it
   bool has_velocity = false;

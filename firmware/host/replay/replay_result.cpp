@@ -57,6 +57,9 @@ std::string ReplayResult::not_aligned_reason() const {
                        "rad/s (in deg/s they read 57x)",
                        scale.gyro_std_at_rest_rad_s, scale.accel_std_at_rest_m_s2);
   }
+  // Fixes without a height are fused once aligned, but the INS starts from a 3-D fix.
+  if (gnss.without_height > 0 && gnss.without_height >= gnss.used)
+    return "the GNSS fixes have no height: RMC or GLL without a GGA sentence";
   if (gnss.used > 0) return "no rest period and no GNSS motion to align on";
   if (source.fixes_after_imu > 0 && gnss.epochs == 0) {
     return fmt::format("gps.nmea's {} fixes all arrive after imu.csv's last sample (the first at t={:.7g} s, imu.csv "

@@ -34,7 +34,8 @@ struct Excitation {
 
 struct GnssFeedCounters {
   std::uint64_t epochs = 0, used = 0, dropped_outage = 0, dropped_period = 0;
-  std::uint64_t without_height = 0;  // a horizontal fix with no height (RMC or GLL without GGA): not used
+  std::uint64_t without_height = 0;  // a horizontal fix with no height (RMC or GLL without GGA): fused north and
+                                     // east once aligned (NavCounters::horizontal_fixes), never aligns the INS
   std::uint64_t observations = 0;          // epochs with a position or a velocity the unit can use
   double first_t_s = 0.0, last_t_s = 0.0;  // their validity times (when observations > 0)
 };

@@ -151,7 +151,7 @@ class UnitFeed final : public ReplayFeed {
     last_used_t_ = t_valid;
     ++gnss.used;
     unit_.push_gnss(z);
-    metrics_.add_gnss({t_valid, z.lat_rad, z.lon_rad, z.h_m});
+    if (z.has_height) metrics_.add_gnss({t_valid, z.lat_rad, z.lon_rad, z.h_m});  // "GNSS alone": the 3-D fixes
   }
 
   void on_imu(const est::ImuSample& s) override {

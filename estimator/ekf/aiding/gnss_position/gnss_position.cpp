@@ -50,8 +50,10 @@ Measurement gnss_position_measurement(const ErrorStateFilter& filter, const NavS
   y.y() = wgs84::lon_difference_rad(nav.lon_rad, z.lon_rad) * rn * std::cos(nav.lat_rad) + offset_n.y();
   y.z() = -(nav.h_m - z.h_m) + offset_n.z();
   y += t.measurement_offset_n;
-  m.innovation = y;
-  m.R = t.white_variance.asDiagonal();
+  const Eigen::Index rows = z.has_height ? 3 : 2;
+  m.innovation = y.head(rows);
+  m.R = t.white_variance.head(rows).asDiagonal();
+  if (rows < 3) m.H.conservativeResize(rows, Eigen::NoChange);
   return m;
 }
 

@@ -3,6 +3,8 @@
 // to the measurement's time of validity with its velocity, the lever arm is
 // added, and y = h(x_hat) - z in NED metres.
 //   H_pos = I, H_att = [(C_nb l) x], H_lever = -C_nb, H_latency = v_n.
+// A fix without a height (GnssObservation::has_height) gives the north and
+// east rows only.
 #include "estimator/ekf/aiding/gnss_observation.hpp"
 #include "estimator/ekf/error_state_filter.hpp"
 #include "estimator/ekf/measurement_update.hpp"
