@@ -143,7 +143,7 @@ bool load_calib(const std::string& path, const CalibChoice& choice, est::SensorN
       } else if (!number_at(gm, "tau_s", tau) || !(tau > 0.0)) {
         return fail(key + ".gm.tau_s", "missing or not positive");
       }
-      if (!number_at(axis["gm"], "variance", var) || !(var >= 0.0)) return fail(key + ".gm.variance", "missing or negative");
+      if (!number_at(gm, "variance", var) || !(var >= 0.0)) return fail(key + ".gm.variance", "missing or negative");
       noise.gm[i] = {tau, var};
     } else {
       // The AR at the model rate when calib.json chose one and the user did not ask for the IMU rate's.

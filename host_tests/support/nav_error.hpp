@@ -1,8 +1,8 @@
 #pragma once
 // A replay's nav.csv against the dataset's truth.csv, for the tests: the
-// horizontal and yaw error of every nav.csv row (truth interpolated linearly
-// in time; the yaw NaN where truth has none) and the row's health flags;
-// window statistics over it.
+// horizontal, height and yaw error of every nav.csv row (truth interpolated
+// linearly in time; the yaw NaN where truth has none), the filter's height
+// sigma and the row's health flags; window statistics over it.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -11,6 +11,7 @@ namespace sinu::test {
 
 struct ErrorSeries {
   std::vector<double> t, err_h, err_yaw_deg, err_vd_m_s;  // err_vd: NaN where truth has no vd
+  std::vector<double> err_height_m, sigma_pd_m;           // nav h - truth h (NaN where truth has none); its sigma
   std::vector<std::uint32_t> flags;
 };
 

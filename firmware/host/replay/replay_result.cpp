@@ -66,7 +66,6 @@ std::string ReplayResult::not_aligned_reason() const {
                        "ends at {:.7g} s): both files must share one clock, in seconds",
                        source.fixes_after_imu, source.first_fix_after_imu_s, source.imu_end_s);
   }
-  if (gnss.without_height > 0) return "the GNSS fixes have no height: RMC or GLL without a GGA sentence";
   return "no GNSS position in the data: gps.nmea absent, empty or without a fix; the INS needs one to start from";
 }
 
