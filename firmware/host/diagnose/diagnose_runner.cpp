@@ -12,6 +12,7 @@
 
 #include "firmware/board/effect_selection.hpp"
 #include "firmware/board/model_file.hpp"
+#include "firmware/host/diagnose/configured_effects.hpp"
 #include "firmware/host/diagnose/diagnosis_html.hpp"
 #include "firmware/host/diagnose/diagnosis_report.hpp"
 #include "firmware/host/replay/replay_files.hpp"
@@ -139,14 +140,6 @@ bool outage_drifts(replay::ReplayOptions opt, const std::vector<replay::Outage>&
   return true;
 }
 
-/// What the model assumes of component k without the effect's states: the
-/// configured latency and lever arm, zero otherwise.
-double assumed_value(est::Effect effect, std::size_t k, const DiagnoseOptions& o) {
-  if (effect == est::Effect::GpsLatency) return o.replay.unit.gps_latency_s;
-  if (effect == est::Effect::LeverArm) return o.replay.unit.lever_arm_b_m(static_cast<Eigen::Index>(k));
-  return 0.0;
-}
-
 }  // namespace
 
 std::string untestable_reason(est::Effect effect, const replay::Excitation& x) {
@@ -172,7 +165,7 @@ std::vector<CarriedFinding> carried_findings(const std::vector<replay::EffectEst
     CarriedFinding f;
     f.effect = e.effect;
     for (std::size_t k = 0; k < e.estimate.size(); ++k) {
-      const double assumed = assumed_value(e.effect, k, o), d = std::abs(e.estimate[k] - assumed);
+      const double assumed = assumed_value(e.effect, static_cast<Eigen::Index>(k), o.replay.unit), d = std::abs(e.estimate[k] - assumed);
       f.assumed.push_back(assumed);
       f.estimate.push_back(e.estimate[k]);
       f.sigma.push_back(e.sigma[k]);
@@ -204,7 +197,7 @@ void weigh_estimate(const replay::EffectEstimate& eff, const est::EffectPrior& f
     // Distance from what the model assumed without the states (the configured latency
     // and lever arm, zero otherwise), in sigmas; for a model-file effect
     // learnt again, from the file's value in both sigmas.
-    double prior = assumed_value(effect, k, o);
+    double prior = assumed_value(effect, static_cast<Eigen::Index>(k), o.replay.unit);
     if (effect == est::Effect::MagSoftIron && k < 3) prior = common_scale;
     if (c.changed) {
       c.file_estimate.push_back(file.value[k]);

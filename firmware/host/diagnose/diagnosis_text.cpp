@@ -4,6 +4,8 @@
 
 #include <cstdio>
 
+#include "firmware/host/diagnose/configured_effects.hpp"
+
 namespace sinu::diagnose {
 
 namespace {
@@ -158,11 +160,10 @@ std::string carried_finding_text(const CarriedFinding& f) {
   }
   if (f.assumed.size() > 1) assumed = "[" + assumed + "]";
   // What to do: the option that configures it, or the model file alone.
-  std::string advice = "--apply writes it, so the next flight starts from it";
-  if (f.effect == est::Effect::GpsLatency) advice = "the configuration is wrong: --gps-latency " + option + " or --apply";
-  if (f.effect == est::Effect::LeverArm) advice = "the configuration is wrong: --lever-arm " + option + " or --apply";
-  if (f.effect == est::Effect::MagHardIron)
-    advice = "the airframe's own field; --apply writes it, so the next flight's heading is right before its first turn";
+  const ConfiguredEffect* configured = configured_effect(f.effect);
+  const std::string advice = configured ? fmt::format("the configuration is wrong: {} {} or --apply", configured->option, option)
+                                        : "a property of this unit or airframe; --apply writes it, so the next flight "
+                                          "starts from it";
   return fmt::format("{} = {}, assumed {} {} ({:.0f} sigma, {} {} off; the model carries it and its states followed "
                      "it: {})",
                      sp.name, vector_text(f.effect, f.estimate, f.sigma), assumed, sp.unit, f.significance,
