@@ -416,37 +416,81 @@ void ErrorStateFilter::seed_attitude(const Eigen::Vector3d& att_sigma_rad) {
   reset_block(layout_.att, att_sigma_rad);
 }
 
-void ErrorStateFilter::seed_accel_bias_at_rest(const NavState& nav, const Eigen::Vector3d& f_b, double g,
-                                               double sigma_along) {
-  if (!layout_.has(Effect::AccelBias) || !(f_b.norm() > 0.0)) return;
-  const Slice& B = layout_.of(Effect::AccelBias);
-  const Eigen::Vector3d u = f_b.normalized();  // "up" in the body frame
-  // The along-gravity part is measured; the rest keeps its prior.
-  const Eigen::Vector3d b0 = view(Effect::AccelBias).vec3();
-  const Eigen::Vector3d b = b0 - u * u.dot(b0) + u * (f_b.norm() - g);
-  for (Eigen::Index i = 0; i < 3; ++i) set_effect(Effect::AccelBias, i, b(i));
-  const Eigen::Matrix3d Pb_prior = P_.block(B.start, B.start, 3, 3);
-  const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - u * u.transpose();
-  double coloured = 0.0;  // the coloured error at rest is in the mean too (as for the gyro)
+void ErrorStateFilter::seed_accel_bias_at_rest(NavState& nav, const Eigen::Vector3d& f_b, double sigma_along) {
+  if (!(f_b.norm() > 0.0)) return;
+  const Eigen::Index n = layout_.dim, V = layout_.vel.start, A = layout_.att.start;
+  // The levelling said "C_nb f + g_n = 0" of the rest window's mean f and set
+  // the tilt from it. Fused as the measurement it is, against a free tilt:
+  // every state that enters that mean (the bias, a misalignment's or a
+  // scale's columns at this f: the velocity rows of the error dynamics, as
+  // each effect file writes them) shares its error with
+  // the tilt, and the along-gravity mean measures their sum. (A tilt
+  // correlated with the bias alone let a cross-axis term such as xz, which
+  // the levelling had put into the pitch just as much, "learn" 20 mrad at rest
+  // and then hold a wrong value for the flight.)
+  const Eigen::Matrix2d tilt_noise = P_.block(A, A, 2, 2);  // seed_attitude's: the levelling's noise, the gyro carry
+  constexpr double kFreeTilt_rad = 1.0;
+  for (Eigen::Index i = 0; i < 2; ++i) reset_state(A + i, kFreeTilt_rad);
+  // Along gravity the rest is the bias's measurement, not a nudge to its
+  // prior (a real board's bias there reaches 0.4 m/s^2, uav_log171): free
+  // along the body's up, the rest of the bias block as it was. What else
+  // enters along gravity (a z scale) keeps its prior and shares the sum.
+  if (layout_.has(Effect::AccelBias)) {
+    constexpr double kFreeBias_m_s2 = 1.0;
+    const Eigen::Index B = layout_.of(Effect::AccelBias).start;
+    const Eigen::Vector3d u = f_b.normalized();
+    const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - u * u.transpose();
+    const Eigen::Matrix3d Pb = across * P_.block(B, B, 3, 3) * across + kFreeBias_m_s2 * kFreeBias_m_s2 * u * u.transpose();
+    for (Eigen::Index i = 0; i < 3; ++i) reset_state(B + i, 0.0);
+    P_.block(B, B, 3, 3) = Pb;
+  }
+
+  ImuSample rest;
+  rest.specific_force_b_m_s2 = f_b;
+  rest.temp_degC = temp_ref_degC_;
+  rest.has_temp = true;
+  const BodyRates comp = compensate(rest);
+  // The body columns through the attitude now (as the tilt error is carried
+  // on): measured on the real drive, the window's own attitude, which a car
+  // has turned away from by the time the course aligns it, kept the heading
+  // from converging without GNSS velocity (GGA only: 9.9 against 3.0 m of
+  // outage drift). The levelled specific force is vertical by construction.
+  const double f_norm = comp.specific_force_b_m_s2.norm();
+  PredictInput in;
+  in.nav = &nav;
+  in.specific_force_b_m_s2 = comp.specific_force_b_m_s2;
+  in.angular_rate_b_rad_s = Eigen::Vector3d::Zero();
+  in.specific_force_n_m_s2 = Eigen::Vector3d(0.0, 0.0, -f_norm);
+  in.dt_s = 1.0;  // Phi - I is then the error dynamics' rate matrix
+  StateMat Phi(n, n);
+  StateVec q(n);
+  build_transition(in, 0, Phi, q);
+
+  Measurement m;
+  m.gate_sigma = 1e9;  // the levelling's own statement: never rejected
+  // The levelling set the tilt so that the horizontal part holds: only the
+  // along-gravity part is news.
+  m.innovation = Eigen::Vector3d(0.0, 0.0, wgs84::normal_gravity_m_s2(nav.lat_rad, nav.h_m) - f_norm);
+  m.H = Phi.block(V, 0, 3, n);
+  m.H.block(0, V, 3, 3) -= Eigen::Matrix3d::Identity();
+  m.H.block(0, layout_.pos.start, 3, 3).setZero();  // Coriolis and the gravity gradient: nothing at rest
+  m.H.block(0, V, 3, 3).setZero();
+  // The coloured error's states are the error of this instant, not of the
+  // window's mean: its variance is noise on the mean (as for the gyro bias).
+  m.H.middleCols(layout_.sensor.start, layout_.sensor.size).setZero();
+  double coloured = 0.0;
   for (Eigen::Index i = 0; i < 3; ++i) {
     const Eigen::Index c = layout_.sensor_state(sensor_axis::kFirstAccel + i);
     coloured = std::max(coloured, P_(c, c));
   }
-  const Eigen::Matrix3d Pb =
-      across * Pb_prior * across + (sigma_along * sigma_along + coloured) * u * u.transpose();
-  // Tilt error made by the levelling from the horizontal bias error.
-  const Eigen::Matrix3d C = nav.C_nb();
-  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
-  M.row(0) = C.row(1) / g;
-  M.row(1) = -C.row(0) / g;
-  const Slice& A = layout_.att;
-  const Eigen::Matrix3d Paa_before = P_.block(A.start, A.start, 3, 3);  // seed_attitude's: noise, gyro carry, yaw
-  reset_block(B, Eigen::Vector3d::Zero());
-  P_.block(B.start, B.start, 3, 3) = Pb;
-  reset_block(A, Eigen::Vector3d::Zero());
-  P_.block(A.start, A.start, 3, 3) = Paa_before + M * Pb * M.transpose();
-  P_.block(A.start, B.start, 3, 3) = M * Pb;
-  P_.block(B.start, A.start, 3, 3) = (M * Pb).transpose();
+  m.R = MeasMat::Zero(3, 3);
+  // Horizontal: exact by construction (its noise is the tilt's, added back
+  // below); along gravity: the mean's own noise.
+  constexpr double kExact_m_s2 = 1e-6;
+  m.R.diagonal() << kExact_m_s2 * kExact_m_s2, kExact_m_s2 * kExact_m_s2, sigma_along * sigma_along + coloured;
+  StateVec dx(n);
+  if (fuse_measurement(P_, dx, m).accepted) feedback(dx, nav);
+  P_.block(A, A, 2, 2) += tilt_noise;
 }
 
 double ErrorStateFilter::sensor_error(Eigen::Index axis) const { return sensor_hat_(hat_index(axis)); }

@@ -131,14 +131,17 @@ class ErrorStateFilter {
   /// estimate turns with the body so the magnetometer stays consistent.
   void reset_yaw(NavState& nav, double dyaw_rad, double sigma_rad);
 
-  /// Attitude prior after an alignment: tilt and yaw sigmas; at rest, also
-  /// the accelerometer bias along gravity measured by the levelling
-  /// (|f| - g along f: the bias's only observable part at rest) and the
-  /// correlation the levelling puts between tilt and the horizontal bias
-  /// (C_hat f stays vertical: phi_n = (C db)_e / g, phi_e = -(C db)_n / g).
+  /// Attitude prior after an alignment: tilt and yaw sigmas.
   void seed_attitude(const Eigen::Vector3d& att_sigma_rad);
-  void seed_accel_bias_at_rest(const NavState& nav, const Eigen::Vector3d& mean_specific_force_b_m_s2,
-                               double gravity_m_s2, double sigma_along_m_s2);
+  /// At rest, after seed_attitude: the levelling's statement "C_nb f + g_n =
+  /// 0" for the window's mean raw specific force, fused against a free tilt.
+  /// Along gravity it measures the sum of what enters f there (the bias, a z
+  /// scale, ...; `sigma_along` the mean's noise); across, the tilt error
+  /// becomes the horizontal part of that sum over g (C_hat f stays
+  /// vertical), correlated with each state by its own Jacobian; the tilt
+  /// keeps seed_attitude's noise on top.
+  void seed_accel_bias_at_rest(NavState& nav, const Eigen::Vector3d& mean_specific_force_b_m_s2,
+                               double sigma_along_m_s2);
 
   /// Seeds the gyro bias measured at rest and its uncertainty [rad/s]: into
   /// the gyro_bias states when active, else into the sensor-error states

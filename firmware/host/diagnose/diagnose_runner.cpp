@@ -140,6 +140,32 @@ bool outage_drifts(replay::ReplayOptions opt, const std::vector<replay::Outage>&
   return true;
 }
 
+/// The input axis that drives component k (effects/*.hpp excited_by: a scale
+/// its own axis, a misalignment or a g-sensitivity the column's), or -1.
+Eigen::Index driving_axis(const est::EffectSpec& spec, Eigen::Index k) {
+  if (spec.excited_by == est::Triad::None) return -1;
+  Eigen::Index driver = k;
+  if (spec.components == est::Components::OffDiagonal) driver = est::kOffDiagonal[static_cast<std::size_t>(k)][1];
+  if (spec.components == est::Components::Matrix) driver = k % 3;
+  return driver < 3 ? driver : -1;
+}
+
+// An accelerometer-driven component whose input axis spans less than this in
+// the flight is not determined by it, whatever its sigma says: the filter's
+// Jacobian takes the compensated specific force, and on an axis that stays
+// near zero (y in coordinated flight) that is mostly the misalignment of
+// gravity not yet learnt (a 25-mrad yz puts 0.25 m/s^2 on y): a regressor of
+// estimate errors and noise, which the term fits to the coloured error left
+// in the other axis (zy -44 +- 10 mrad against a true +18 on seed 4321, f_y
+// within 0.1 m/s^2). 0.1 g is what a pull-up or a coordinated turn gives z.
+constexpr double kMinDrivingSpan_m_s2 = 0.1 * 9.80665;
+
+bool undriven(const est::EffectSpec& spec, Eigen::Index k, const replay::Excitation* x) {
+  const Eigen::Index d = driving_axis(spec, k);
+  if (x == nullptr || d < 0 || spec.excited_by != est::Triad::Accel) return false;
+  return x->f_max_m_s2(d) - x->f_min_m_s2(d) < kMinDrivingSpan_m_s2;
+}
+
 }  // namespace
 
 std::string untestable_reason(est::Effect effect, const replay::Excitation& x) {
@@ -181,7 +207,7 @@ std::vector<CarriedFinding> carried_findings(const std::vector<replay::EffectEst
 }
 
 void weigh_estimate(const replay::EffectEstimate& eff, const est::EffectPrior& file, const DiagnoseOptions& o,
-                    CandidateResult& c) {
+                    CandidateResult& c, const replay::Excitation* x) {
   const est::Effect effect = c.effect;
   // Soft iron: a scale common to the three diagonal terms (xx yy zz) trades
   // against the Earth field's strength, itself a state, so it is no evidence
@@ -206,6 +232,7 @@ void weigh_estimate(const replay::EffectEstimate& eff, const est::EffectPrior& f
       sg = std::hypot(sg, file.sigma[k]);
     }
     const double z = sg > 0.0 ? std::abs(v - prior) / sg : 0.0;
+    if (undriven(est::spec(effect), static_cast<Eigen::Index>(k), x)) continue;
     c.significance = std::max(c.significance, z);
     // Only a component the flight determines can be implausible: one it left
     // near its prior (an unexcited axis) wanders at its prior sigma, which may
@@ -219,26 +246,29 @@ void weigh_estimate(const replay::EffectEstimate& eff, const est::EffectPrior& f
 void observability_notes(const CandidateResult& c, const replay::Excitation& x, std::vector<std::string>& out) {
   const est::EffectSpec& spec = est::spec(c.effect);
   for (std::size_t i = 0; i < c.sigma_ratio.size(); ++i) {
-    if (!(c.sigma_ratio[i] > 0.5)) continue;
     const auto k = static_cast<Eigen::Index>(i);
+    const bool input_still = undriven(spec, k, &x);
+    if (!(c.sigma_ratio[i] > 0.5) && !input_still) continue;
     const std::string what = std::string(spec.name) + (est::kEffectDims[static_cast<std::size_t>(c.effect)] > 1
                                                            ? std::string(" ") + est::effect_component_name(c.effect, k)
                                                            : "");
-    std::string note = fmt::format("{}: the flight left {:.0f} % of its prior sigma (weakly observable here)", what,
-                                   100.0 * c.sigma_ratio[i]);
+    std::string note =
+        c.sigma_ratio[i] > 0.5
+            ? fmt::format("{}: the flight left {:.0f} % of its prior sigma (weakly observable here)", what,
+                          100.0 * c.sigma_ratio[i])
+            : fmt::format("{}: its sigma fell to {:.0f} % of the prior, but its input never moved: not determined by "
+                          "this flight (not weighed)", what, 100.0 * c.sigma_ratio[i]);
     // What the effect needs (effects/*.hpp excited_by): a scale the axis's own
     // range, a misalignment or a g-sensitivity the other axis's (the column).
-    Eigen::Index driver = k;
-    if (spec.components == est::Components::OffDiagonal) driver = est::kOffDiagonal[i][1];
-    if (spec.components == est::Components::Matrix) driver = k % 3;
+    const Eigen::Index driver = driving_axis(spec, k);
     const bool accel_driven = spec.excited_by == est::Triad::Accel;
     const bool gyro_driven = spec.excited_by == est::Triad::Gyro;
-    if (accel_driven && driver < 3) {
+    if (accel_driven && driver >= 0) {
       const double lo = x.f_min_m_s2(driver), hi = x.f_max_m_s2(driver);
       note += fmt::format("; specific force {} stayed within {:.1f}..{:.1f} m/s^2 (a span of {:.2f} g): a pull-up, a "
                           "push-over or a bench tumble test (six positions) separates it from the bias",
                           kAxis[driver], lo, hi, (hi - lo) / kG);
-    } else if (gyro_driven && driver < 3) {
+    } else if (gyro_driven && driver >= 0) {
       const double span = std::max(std::abs(x.w_min_rad_s(driver)), std::abs(x.w_max_rad_s(driver))) * est::kRadToDeg;
       note += fmt::format("; rate {} never exceeded {:.0f} deg/s: faster turns or rolls about that axis reveal it",
                           kAxis[driver], span);
@@ -418,7 +448,7 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
       // a log Bayes factor, and a BIC term on top would charge for them twice.
       c.evidence_threshold = o.min_log_evidence;
       for (const replay::EffectEstimate& eff : score.effects)
-        if (eff.effect == effect) weigh_estimate(eff, file, o, c);
+        if (eff.effect == effect) weigh_estimate(eff, file, o, c, &current.excitation);
       c.stats = score.stats;
       c.rmse_pos_h_m = score.rmse_pos_h_m;
       c.rmse_att_deg = score.rmse_att_deg;

@@ -155,8 +155,10 @@ std::string untestable_reason(est::Effect effect, const replay::Excitation& x);
 /// value for a re-learnt effect) and plausibility (the largest significant
 /// component against the vocabulary's plausible maximum) from a replay's
 /// estimate of c.effect; `file` is the model file's value (c.changed only).
+/// With the flight's excitation `x`, an accelerometer-driven component whose
+/// input axis never spanned 0.1 g counts for neither.
 void weigh_estimate(const replay::EffectEstimate& eff, const est::EffectPrior& file, const DiagnoseOptions& o,
-                    CandidateResult& c);
+                    CandidateResult& c, const replay::Excitation* x = nullptr);
 
 /// Notes for the components of a candidate the flight barely constrained
 /// (posterior sigma above half the prior), with what would reveal them.
