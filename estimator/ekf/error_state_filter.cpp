@@ -416,6 +416,76 @@ void ErrorStateFilter::seed_attitude(const Eigen::Vector3d& att_sigma_rad) {
   reset_block(layout_.att, att_sigma_rad);
 }
 
+BodyRates ErrorStateFilter::compensate_at_rest(const Eigen::Vector3d& f_b) const {
+  ImuSample rest;
+  rest.specific_force_b_m_s2 = f_b;
+  rest.temp_degC = temp_ref_degC_;
+  rest.has_temp = true;
+  return compensate(rest);
+}
+
+MeasJacobian ErrorStateFilter::rest_rows(const NavState& nav, const Eigen::Vector3d& f_b, Eigen::Index rows,
+                                         Eigen::Index free_tilt) const {
+  const Eigen::Index n = layout_.dim;
+  // The body columns through the attitude now (as the tilt error is carried
+  // on): measured on the real drive, the window's own attitude, which a car
+  // has turned away from by the time the course aligns it, kept the heading
+  // from converging without GNSS velocity (GGA only: 9.9 against 3.0 m of
+  // outage drift). The levelled specific force is vertical by construction.
+  PredictInput in;
+  in.nav = &nav;
+  in.specific_force_b_m_s2 = f_b;
+  in.angular_rate_b_rad_s = Eigen::Vector3d::Zero();
+  in.specific_force_n_m_s2 = Eigen::Vector3d(0.0, 0.0, -f_b.norm());
+  in.dt_s = 1.0;  // Phi - I is then the error dynamics' rate matrix
+  StateMat Phi(n, n);
+  StateVec q(n);
+  build_transition(in, 0, Phi, q);
+  MeasJacobian H = Phi.block(rows, 0, 3, n);
+  // The navigation states: only the tilt (when free_tilt >= 0) is in the
+  // rest's statement; Coriolis, the gravity gradient and Earth rate are nothing at rest.
+  const Eigen::Matrix<double, 3, 2> tilt = H.block(0, layout_.att.start, 3, 2);
+  for (const Slice& nav_block : {layout_.pos, layout_.vel, layout_.att}) H.middleCols(nav_block.start, 3).setZero();
+  if (free_tilt >= 0) H.block(0, layout_.att.start, 3, 2) = tilt;
+  // The coloured error's states are the error of this instant, not of the
+  // window's mean: its variance is noise on the mean.
+  H.middleCols(layout_.sensor.start, layout_.sensor.size).setZero();
+  return H;
+}
+
+double ErrorStateFilter::coloured_variance(Eigen::Index first_axis) const {
+  double v = 0.0;
+  for (Eigen::Index i = 0; i < 3; ++i) v = std::max(v, P_(layout_.sensor_state(first_axis + i), layout_.sensor_state(first_axis + i)));
+  return v;
+}
+
+void ErrorStateFilter::correlate_gyro_bias_at_rest(const NavState& nav, const Eigen::Vector3d& f_b) {
+  if (!layout_.has(Effect::GyroBias)) return;
+  // seed_gyro_bias gave the rest's mean rate to the bias, with the mean's
+  // noise. But that mean is the sum of what enters the gyro at rest: the
+  // bias and, at this f, a g-sensitivity's column along gravity. As for the
+  // levelling: the bias free, the statement fused with zero innovation (the
+  // value is already the bias's), so the bias's error carries the others'
+  // (d b = -G_z d f_z): a g-sensitivity the rest hid in the bias is then
+  // learnt from the load factor's changes instead of held at zero by level
+  // flight.
+  const Eigen::Index B = layout_.of(Effect::GyroBias).start, n = layout_.dim;
+  Eigen::Vector3d seeded;
+  for (Eigen::Index i = 0; i < 3; ++i) seeded(i) = P_(B + i, B + i);
+  constexpr double kFreeBias_rad_s = 1.0;
+  for (Eigen::Index i = 0; i < 3; ++i) reset_state(B + i, kFreeBias_rad_s);
+  Measurement m;
+  m.gate_sigma = 1e9;
+  m.innovation = Eigen::Vector3d::Zero();
+  m.H = rest_rows(nav, compensate_at_rest(f_b).specific_force_b_m_s2, layout_.att.start, -1);
+  m.R = MeasMat::Zero(3, 3);
+  // Per navigation axis: the seeded variance of the body axes it sees (level at rest).
+  const Eigen::Matrix3d C = nav.C_nb();
+  m.R.topLeftCorner(3, 3) = C * seeded.asDiagonal() * C.transpose();
+  StateVec dx(n);
+  fuse_measurement(P_, dx, m);
+}
+
 void ErrorStateFilter::seed_accel_bias_at_rest(NavState& nav, const Eigen::Vector3d& f_b, double sigma_along) {
   if (!(f_b.norm() > 0.0)) return;
   const Eigen::Index n = layout_.dim, V = layout_.vel.start, A = layout_.att.start;
@@ -445,44 +515,15 @@ void ErrorStateFilter::seed_accel_bias_at_rest(NavState& nav, const Eigen::Vecto
     P_.block(B, B, 3, 3) = Pb;
   }
 
-  ImuSample rest;
-  rest.specific_force_b_m_s2 = f_b;
-  rest.temp_degC = temp_ref_degC_;
-  rest.has_temp = true;
-  const BodyRates comp = compensate(rest);
-  // The body columns through the attitude now (as the tilt error is carried
-  // on): measured on the real drive, the window's own attitude, which a car
-  // has turned away from by the time the course aligns it, kept the heading
-  // from converging without GNSS velocity (GGA only: 9.9 against 3.0 m of
-  // outage drift). The levelled specific force is vertical by construction.
+  const BodyRates comp = compensate_at_rest(f_b);
   const double f_norm = comp.specific_force_b_m_s2.norm();
-  PredictInput in;
-  in.nav = &nav;
-  in.specific_force_b_m_s2 = comp.specific_force_b_m_s2;
-  in.angular_rate_b_rad_s = Eigen::Vector3d::Zero();
-  in.specific_force_n_m_s2 = Eigen::Vector3d(0.0, 0.0, -f_norm);
-  in.dt_s = 1.0;  // Phi - I is then the error dynamics' rate matrix
-  StateMat Phi(n, n);
-  StateVec q(n);
-  build_transition(in, 0, Phi, q);
-
   Measurement m;
   m.gate_sigma = 1e9;  // the levelling's own statement: never rejected
   // The levelling set the tilt so that the horizontal part holds: only the
   // along-gravity part is news.
   m.innovation = Eigen::Vector3d(0.0, 0.0, wgs84::normal_gravity_m_s2(nav.lat_rad, nav.h_m) - f_norm);
-  m.H = Phi.block(V, 0, 3, n);
-  m.H.block(0, V, 3, 3) -= Eigen::Matrix3d::Identity();
-  m.H.block(0, layout_.pos.start, 3, 3).setZero();  // Coriolis and the gravity gradient: nothing at rest
-  m.H.block(0, V, 3, 3).setZero();
-  // The coloured error's states are the error of this instant, not of the
-  // window's mean: its variance is noise on the mean (as for the gyro bias).
-  m.H.middleCols(layout_.sensor.start, layout_.sensor.size).setZero();
-  double coloured = 0.0;
-  for (Eigen::Index i = 0; i < 3; ++i) {
-    const Eigen::Index c = layout_.sensor_state(sensor_axis::kFirstAccel + i);
-    coloured = std::max(coloured, P_(c, c));
-  }
+  m.H = rest_rows(nav, comp.specific_force_b_m_s2, V, A);
+  const double coloured = coloured_variance(sensor_axis::kFirstAccel);
   m.R = MeasMat::Zero(3, 3);
   // Horizontal: exact by construction (its noise is the tilt's, added back
   // below); along gravity: the mean's own noise.

@@ -143,6 +143,11 @@ class ErrorStateFilter {
   void seed_accel_bias_at_rest(NavState& nav, const Eigen::Vector3d& mean_specific_force_b_m_s2,
                                double sigma_along_m_s2);
 
+  /// At rest, after seed_gyro_bias: the rest's mean rate is the sum of what
+  /// enters the gyro there (the bias, a g-sensitivity's columns at the rest's
+  /// mean specific force f_b): the bias's covariance becomes that of the sum,
+  /// correlated with the others by their own Jacobians.
+  void correlate_gyro_bias_at_rest(const NavState& nav, const Eigen::Vector3d& mean_specific_force_b_m_s2);
   /// Seeds the gyro bias measured at rest and its uncertainty [rad/s]: into
   /// the gyro_bias states when active, else into the sensor-error states
   /// (all lags of an AR block get the same value).
@@ -156,6 +161,15 @@ class ErrorStateFilter {
 
  private:
   void apply_prior(Effect e);
+  /// A rest window's mean specific force, compensated with the current estimates.
+  BodyRates compensate_at_rest(const Eigen::Vector3d& f_b) const;
+  /// The error dynamics' rate rows (`rows`: the velocity's or the attitude's)
+  /// at rest with specific force f_b: the columns of the states that enter a
+  /// rest window's mean; the navigation states' zero but the tilt's (about
+  /// north and east) when free_tilt >= 0; the coloured error's zero.
+  MeasJacobian rest_rows(const NavState& nav, const Eigen::Vector3d& f_b, Eigen::Index rows, Eigen::Index free_tilt) const;
+  /// The largest coloured-error variance of a triad (its first sensor axis).
+  double coloured_variance(Eigen::Index first_axis) const;
   double* values(Effect e) { return value_.data() + kEffectValueOffset[static_cast<std::size_t>(e)]; }
   struct FeedbackTerms;  // what an effect's feedback may use (error_state_filter.cpp)
   Eigen::Index hat_index(Eigen::Index axis) const { return axis * layout_.order; }

@@ -270,6 +270,7 @@ void Navigator::align(const ImuSample& s, double dt) {
     filter_.seed_gyro_bias(res.gyro_bias_rad_s, res.gyro_bias_sigma_rad_s);
     if (res.at_rest) {
       // Floor: normal gravity against the site's true gravity (anomalies ~1e-3 g).
+      filter_.correlate_gyro_bias_at_rest(nav_, res.rest_specific_force_b_m_s2);
       filter_.seed_accel_bias_at_rest(nav_, res.rest_specific_force_b_m_s2,
                                       std::max(res.rest_specific_force_sigma_m_s2, 0.01));
     }

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -48,18 +49,34 @@ double column(const std::vector<std::pair<std::string, double>>& row, const std:
   return NAN;
 }
 
+/// A 20-minute flight of a unit with `effects_json` (its bench session of 1 h,
+/// the same seed, calibrated), replayed with that effect's states and 1-Hz
+/// rows. Returns the output folder ("" after a failure, reported).
+std::string replay_unit(const TempDir& dir, const std::string& effects_json, const std::string& seed,
+                        const std::string& effect) {
+  const std::string effects = dir.write("unit.json", effects_json);
+  const std::string flight = dir.file("flight"), bench = dir.file("bench"), calib = dir.file("calib.json");
+  const std::string out = dir.file("r");
+  for (const auto& args : {std::vector<std::string>{"simulate", "flight", "--out", flight, "--seed", seed, "--duration",
+                                                    "1200", "--effects", effects},
+                           std::vector<std::string>{"simulate", "static", "--out", bench, "--seed", seed, "--hours", "1"},
+                           std::vector<std::string>{"calibrate", "--in", bench, "--out", calib, "--quiet"},
+                           std::vector<std::string>{"replay", "--in", flight, "--calib", calib, "--effects", effect,
+                                                    "--nav-rate", "1", "--quiet", "--out", out}}) {
+    const auto r = run_sinu(args);
+    if (r.exit_code != 0) {
+      ADD_FAILURE() << args[0] << ": " << r.err;
+      return "";
+    }
+  }
+  return out;
+}
+
 TEST(RestLevelling, ACrossAxisTermTheLevellingTookForATiltIsLearntInFlightNotAtRest) {
   TempDir dir;
-  const std::string effects = dir.write("unit.json", R"({"accel_misalign": [[0, 0.015, -0.020], [0.010, 0, 0.025], [-0.012, 0.018, 0]]})");
-  const std::string flight = dir.file("flight"), bench = dir.file("bench"), calib = dir.file("calib.json");
-  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", flight, "--seed", "4321", "--duration", "1200", "--effects", effects})
-                .exit_code, 0);
-  ASSERT_EQ(run_sinu({"simulate", "static", "--out", bench, "--seed", "4321", "--hours", "1"}).exit_code, 0);
-  ASSERT_EQ(run_sinu({"calibrate", "--in", bench, "--out", calib, "--quiet"}).exit_code, 0);
-  const std::string out = dir.file("r");
-  const auto r = run_sinu({"replay", "--in", flight, "--calib", calib, "--effects", "accel_misalign", "--nav-rate", "1",
-                           "--quiet", "--out", out});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string out = replay_unit(
+      dir, R"({"accel_misalign": [[0, 0.015, -0.020], [0.010, 0, 0.025], [-0.012, 0.018, 0]]})", "4321", "accel_misalign");
+  ASSERT_FALSE(out.empty());
 
   // Aligned at rest, still standing 10 s later (the flight takes off after
   // about a minute): the rest has said nothing of xz and yz on their own
@@ -81,6 +98,35 @@ TEST(RestLevelling, ACrossAxisTermTheLevellingTookForATiltIsLearntInFlightNotAtR
     return;
   }
   ADD_FAILURE() << "summary.json has no accel_misalign estimate";
+}
+
+// The gyro's twin: at rest a g-sensitivity's column along gravity (G_xz,
+// G_yz, G_zz times -g) is in the mean rate the bias is seeded from. With the
+// bias's sigma the mean's noise alone, level flight held that column at zero
+// and the turns' load factor could not move it (seed 5555: xz -0.019 +-
+// 0.036, yz 0.027 +- 0.026, zz 0.046 +- 0.032 against -0.2, 0.1, 0.25
+// deg/s/g). The bias now carries the column's error (d b = g dG_z).
+TEST(RestLevelling, AGSensitivityTheRestHidInTheGyroBiasIsLearntFromTheLoadFactor) {
+  TempDir dir;
+  constexpr double k = 3.14159265358979 / 180.0 / 9.80665;  // deg/s/g -> rad/s per m/s^2
+  char spec[256];
+  std::snprintf(spec, sizeof spec, R"({"gyro_g_sensitivity": [[%.9g, 0, %.9g], [0, %.9g, %.9g], [0, 0, %.9g]]})",
+                0.05 * k, -0.2 * k, 0.05 * k, 0.1 * k, 0.25 * k);
+  const std::string out = replay_unit(dir, spec, "5555", "gyro_g_sensitivity");
+  ASSERT_FALSE(out.empty());
+  const auto s = read_json(out + "/summary.json");
+  // Row-major: xz, yz, zz are components 2, 5, 8. Measured -0.176 +- 0.056,
+  // 0.088 +- 0.052, 0.197 +- 0.078 deg/s/g: each within 3 sigma of the unit's.
+  const std::pair<std::size_t, double> column_z[] = {{2, -0.2 * k}, {5, 0.1 * k}, {8, 0.25 * k}};
+  for (const auto& e : s["effects"]) {
+    if (e["name"] != "gyro_g_sensitivity") continue;
+    for (const auto& [i, truth] : column_z) {
+      const double v = e["estimate"][i].get<double>(), sg = e["sigma"][i].get<double>();
+      EXPECT_LT(std::abs(v - truth), 3.0 * sg) << "component " << i << ": " << v / k << " +- " << sg / k << " deg/s/g";
+    }
+    return;
+  }
+  ADD_FAILURE() << "summary.json has no gyro_g_sensitivity estimate";
 }
 
 }  // namespace
