@@ -257,7 +257,7 @@ void observability_notes(const CandidateResult& c, const replay::Excitation& x, 
             ? fmt::format("{}: the flight left {:.0f} % of its prior sigma (weakly observable here)", what,
                           100.0 * c.sigma_ratio[i])
             : fmt::format("{}: its sigma fell to {:.0f} % of the prior, but its input never moved: not determined by "
-                          "this flight (not weighed)", what, 100.0 * c.sigma_ratio[i]);
+                          "this flight (not weighed; --apply leaves it at its prior)", what, 100.0 * c.sigma_ratio[i]);
     // What the effect needs (effects/*.hpp excited_by): a scale the axis's own
     // range, a misalignment or a g-sensitivity the other axis's (the column).
     const Eigen::Index driver = driving_axis(spec, k);
@@ -526,7 +526,17 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     for (const replay::EffectEstimate& e : current.effects) {
       const bool from_file = known[static_cast<std::size_t>(e.effect)].given;
       if ((defaults.has(e.effect) && !from_file) || !model.has(e.effect)) continue;
-      found.push_back({e.effect, e.estimate, e.sigma});
+      board::ModelEffect m{e.effect, e.estimate, e.sigma};
+      // What this flight did not drive is not its finding: the next flight
+      // starts that component from the prior (zy's -46 +- 12 mrad, fitted
+      // through f_y's linearisation residue, would hold a sideslipping flight
+      // 4 sigma off).
+      for (std::size_t k = 0; k < m.estimate.size() && !from_file; ++k) {
+        if (!undriven(est::spec(e.effect), static_cast<Eigen::Index>(k), &current.excitation)) continue;
+        m.estimate[k] = 0.0;
+        m.sigma[k] = est::spec(e.effect).initial_sigma;
+      }
+      found.push_back(m);
     }
     // A carried property goes in held to the resolution it is reported at, not
     // this flight's sigma: an airframe's hard iron changes with its battery and
