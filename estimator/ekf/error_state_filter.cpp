@@ -493,42 +493,40 @@ void ErrorStateFilter::seed_accel_bias_at_rest(NavState& nav, const Eigen::Vecto
   // the tilt from it. Fused as the measurement it is, against a free tilt:
   // every state that enters that mean (the bias, a misalignment's or a
   // scale's columns at this f: the velocity rows of the error dynamics, as
-  // each effect file writes them) shares its error with
-  // the tilt, and the along-gravity mean measures their sum. (A tilt
+  // each effect file writes them) shares its error with the tilt. (A tilt
   // correlated with the bias alone let a cross-axis term such as xz, which
   // the levelling had put into the pitch just as much, "learn" 20 mrad at rest
   // and then hold a wrong value for the flight.)
   const Eigen::Matrix2d tilt_noise = P_.block(A, A, 2, 2);  // seed_attitude's: the levelling's noise, the gyro carry
   constexpr double kFreeTilt_rad = 1.0;
   for (Eigen::Index i = 0; i < 2; ++i) reset_state(A + i, kFreeTilt_rad);
-  // Along gravity the rest is the bias's measurement, not a nudge to its
-  // prior (a real board's bias there reaches 0.4 m/s^2, uav_log171): free
-  // along the body's up, the rest of the bias block as it was. What else
-  // enters along gravity (a z scale) keeps its prior and shares the sum.
+  // Along gravity the rest measures the bias, as it always did: its value
+  // there is |f| - g (of the mean compensated with the other estimates) and
+  // its variance the mean's noise and the coloured error's. (Shared with a z
+  // scale by the same statement, the pair drifted along its ridge on the
+  // real drive, which never changes f_z: z scale 14 %, bias 1.3 m/s^2.)
+  const BodyRates comp = compensate_at_rest(f_b);
+  const double f_norm = comp.specific_force_b_m_s2.norm();
   if (layout_.has(Effect::AccelBias)) {
-    constexpr double kFreeBias_m_s2 = 1.0;
     const Eigen::Index B = layout_.of(Effect::AccelBias).start;
-    const Eigen::Vector3d u = f_b.normalized();
+    const Eigen::Vector3d u = f_b.normalized();  // "up" in the body frame
+    const double g = wgs84::normal_gravity_m_s2(nav.lat_rad, nav.h_m);
+    const Eigen::Vector3d b = view(Effect::AccelBias).vec3() + u * (f_norm - g);
+    for (Eigen::Index i = 0; i < 3; ++i) set_effect(Effect::AccelBias, i, b(i));
     const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - u * u.transpose();
-    const Eigen::Matrix3d Pb = across * P_.block(B, B, 3, 3) * across + kFreeBias_m_s2 * kFreeBias_m_s2 * u * u.transpose();
+    const Eigen::Matrix3d Pb = across * P_.block(B, B, 3, 3) * across +
+                               (sigma_along * sigma_along + coloured_variance(sensor_axis::kFirstAccel)) * u * u.transpose();
     for (Eigen::Index i = 0; i < 3; ++i) reset_state(B + i, 0.0);
     P_.block(B, B, 3, 3) = Pb;
   }
-
-  const BodyRates comp = compensate_at_rest(f_b);
-  const double f_norm = comp.specific_force_b_m_s2.norm();
+  // Across gravity: the levelling made the horizontal part exact, so the tilt
+  // error is minus the horizontal sum of every state's share over g.
   Measurement m;
   m.gate_sigma = 1e9;  // the levelling's own statement: never rejected
-  // The levelling set the tilt so that the horizontal part holds: only the
-  // along-gravity part is news.
-  m.innovation = Eigen::Vector3d(0.0, 0.0, wgs84::normal_gravity_m_s2(nav.lat_rad, nav.h_m) - f_norm);
-  m.H = rest_rows(nav, comp.specific_force_b_m_s2, V, A);
-  const double coloured = coloured_variance(sensor_axis::kFirstAccel);
-  m.R = MeasMat::Zero(3, 3);
-  // Horizontal: exact by construction (its noise is the tilt's, added back
-  // below); along gravity: the mean's own noise.
-  constexpr double kExact_m_s2 = 1e-6;
-  m.R.diagonal() << kExact_m_s2 * kExact_m_s2, kExact_m_s2 * kExact_m_s2, sigma_along * sigma_along + coloured;
+  m.innovation = Eigen::Vector2d::Zero();
+  m.H = rest_rows(nav, comp.specific_force_b_m_s2, V, A).topRows(2);
+  constexpr double kExact_m_s2 = 1e-6;  // its noise is the tilt's, added back below
+  m.R = MeasMat::Identity(2, 2) * (kExact_m_s2 * kExact_m_s2);
   StateVec dx(n);
   if (fuse_measurement(P_, dx, m).accepted) feedback(dx, nav);
   P_.block(A, A, 2, 2) += tilt_noise;

@@ -133,13 +133,13 @@ class ErrorStateFilter {
 
   /// Attitude prior after an alignment: tilt and yaw sigmas.
   void seed_attitude(const Eigen::Vector3d& att_sigma_rad);
-  /// At rest, after seed_attitude: the levelling's statement "C_nb f + g_n =
-  /// 0" for the window's mean raw specific force, fused against a free tilt.
-  /// Along gravity it measures the sum of what enters f there (the bias, a z
-  /// scale, ...; `sigma_along` the mean's noise); across, the tilt error
-  /// becomes the horizontal part of that sum over g (C_hat f stays
-  /// vertical), correlated with each state by its own Jacobian; the tilt
-  /// keeps seed_attitude's noise on top.
+  /// At rest, after seed_attitude: along gravity the window's mean raw
+  /// specific force measures the accelerometer bias (|f| - g, `sigma_along`
+  /// the mean's noise); across, the levelling's "C_nb f + g_n = 0" is fused
+  /// against a free tilt, so the tilt error becomes the horizontal sum of
+  /// what enters f there (the bias, a misalignment's terms sensing gravity)
+  /// over g, correlated with each state by its own Jacobian; the tilt keeps
+  /// seed_attitude's noise on top.
   void seed_accel_bias_at_rest(NavState& nav, const Eigen::Vector3d& mean_specific_force_b_m_s2,
                                double sigma_along_m_s2);
 
