@@ -425,7 +425,7 @@ BodyRates ErrorStateFilter::compensate_at_rest(const Eigen::Vector3d& f_b) const
 }
 
 MeasJacobian ErrorStateFilter::rest_rows(const NavState& nav, const Eigen::Vector3d& f_b, Eigen::Index rows,
-                                         Eigen::Index free_tilt) const {
+                                         bool with_tilt) const {
   const Eigen::Index n = layout_.dim;
   // The body columns through the attitude now (as the tilt error is carried
   // on): measured on the real drive, the window's own attitude, which a car
@@ -442,11 +442,11 @@ MeasJacobian ErrorStateFilter::rest_rows(const NavState& nav, const Eigen::Vecto
   StateVec q(n);
   build_transition(in, 0, Phi, q);
   MeasJacobian H = Phi.block(rows, 0, 3, n);
-  // The navigation states: only the tilt (when free_tilt >= 0) is in the
+  // The navigation states: only the tilt (with_tilt) is in the
   // rest's statement; Coriolis, the gravity gradient and Earth rate are nothing at rest.
   const Eigen::Matrix<double, 3, 2> tilt = H.block(0, layout_.att.start, 3, 2);
   for (const Slice& nav_block : {layout_.pos, layout_.vel, layout_.att}) H.middleCols(nav_block.start, 3).setZero();
-  if (free_tilt >= 0) H.block(0, layout_.att.start, 3, 2) = tilt;
+  if (with_tilt) H.block(0, layout_.att.start, 3, 2) = tilt;
   // The coloured error's states are the error of this instant, not of the
   // window's mean: its variance is noise on the mean.
   H.middleCols(layout_.sensor.start, layout_.sensor.size).setZero();
@@ -455,7 +455,10 @@ MeasJacobian ErrorStateFilter::rest_rows(const NavState& nav, const Eigen::Vecto
 
 double ErrorStateFilter::coloured_variance(Eigen::Index first_axis) const {
   double v = 0.0;
-  for (Eigen::Index i = 0; i < 3; ++i) v = std::max(v, P_(layout_.sensor_state(first_axis + i), layout_.sensor_state(first_axis + i)));
+  for (Eigen::Index i = 0; i < 3; ++i) {
+    const Eigen::Index c = layout_.sensor_state(first_axis + i);
+    v = std::max(v, P_(c, c));
+  }
   return v;
 }
 
@@ -477,7 +480,7 @@ void ErrorStateFilter::correlate_gyro_bias_at_rest(const NavState& nav, const Ei
   Measurement m;
   m.gate_sigma = 1e9;
   m.innovation = Eigen::Vector3d::Zero();
-  m.H = rest_rows(nav, compensate_at_rest(f_b).specific_force_b_m_s2, layout_.att.start, -1);
+  m.H = rest_rows(nav, compensate_at_rest(f_b).specific_force_b_m_s2, layout_.att.start, false);
   m.R = MeasMat::Zero(3, 3);
   // Per navigation axis: the seeded variance of the body axes it sees (level at rest).
   const Eigen::Matrix3d C = nav.C_nb();
@@ -524,7 +527,7 @@ void ErrorStateFilter::seed_accel_bias_at_rest(NavState& nav, const Eigen::Vecto
   Measurement m;
   m.gate_sigma = 1e9;  // the levelling's own statement: never rejected
   m.innovation = Eigen::Vector2d::Zero();
-  m.H = rest_rows(nav, comp.specific_force_b_m_s2, V, A).topRows(2);
+  m.H = rest_rows(nav, comp.specific_force_b_m_s2, V, true).topRows(2);
   constexpr double kExact_m_s2 = 1e-6;  // its noise is the tilt's, added back below
   m.R = MeasMat::Identity(2, 2) * (kExact_m_s2 * kExact_m_s2);
   StateVec dx(n);

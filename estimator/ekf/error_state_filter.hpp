@@ -165,9 +165,9 @@ class ErrorStateFilter {
   BodyRates compensate_at_rest(const Eigen::Vector3d& f_b) const;
   /// The error dynamics' rate rows (`rows`: the velocity's or the attitude's)
   /// at rest with specific force f_b: the columns of the states that enter a
-  /// rest window's mean; the navigation states' zero but the tilt's (about
-  /// north and east) when free_tilt >= 0; the coloured error's zero.
-  MeasJacobian rest_rows(const NavState& nav, const Eigen::Vector3d& f_b, Eigen::Index rows, Eigen::Index free_tilt) const;
+  /// rest window's mean; the navigation states' zero but, with_tilt, the
+  /// tilt's (about north and east); the coloured error's zero.
+  MeasJacobian rest_rows(const NavState& nav, const Eigen::Vector3d& f_b, Eigen::Index rows, bool with_tilt) const;
   /// The largest coloured-error variance of a triad (its first sensor axis).
   double coloured_variance(Eigen::Index first_axis) const;
   double* values(Effect e) { return value_.data() + kEffectValueOffset[static_cast<std::size_t>(e)]; }

@@ -11,43 +11,17 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "host_tests/support/nav_error.hpp"
 #include "host_tests/support/read_json.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
 namespace sinu::test {
 namespace {
-
-/// The nav.csv row `after_s` past its first one, as column name -> value.
-std::vector<std::pair<std::string, double>> row_after(const std::string& nav_csv, double after_s) {
-  std::ifstream in(nav_csv);
-  std::string header, row;
-  std::getline(in, header);
-  double t0 = NAN;
-  while (std::getline(in, row)) {
-    const double t = std::stod(row.substr(0, row.find(',')));
-    if (std::isnan(t0)) t0 = t;
-    if (t >= t0 + after_s) break;
-  }
-  std::stringstream h(header), r(row);
-  std::vector<std::pair<std::string, double>> out;
-  for (std::string name, value; std::getline(h, name, ',') && std::getline(r, value, ',');)
-    out.emplace_back(name, value.empty() ? NAN : std::stod(value));
-  return out;
-}
-
-double column(const std::vector<std::pair<std::string, double>>& row, const std::string& name) {
-  for (const auto& [n, v] : row)
-    if (n == name) return v;
-  ADD_FAILURE() << "nav.csv has no column " << name;
-  return NAN;
-}
 
 /// A 20-minute flight of a unit with `effects_json` (its bench session of 1 h,
 /// the same seed, calibrated), replayed with that effect's states and 1-Hz
@@ -81,9 +55,8 @@ TEST(RestLevelling, ACrossAxisTermTheLevellingTookForATiltIsLearntInFlightNotAtR
   // Aligned at rest, still standing 10 s later (the flight takes off after
   // about a minute): the rest has said nothing of xz and yz on their own
   // (their prior sigma is 20 mrad; before, 3.2 and 2.8 mrad here).
-  const auto row = row_after(out + "/nav.csv", 10.0);
-  EXPECT_GT(column(row, "sigma_accel_misalign_xz"), 0.9 * 0.020);
-  EXPECT_GT(column(row, "sigma_accel_misalign_yz"), 0.9 * 0.020);
+  EXPECT_GT(nav_value_after(out + "/nav.csv", "sigma_accel_misalign_xz", 10.0), 0.9 * 0.020);
+  EXPECT_GT(nav_value_after(out + "/nav.csv", "sigma_accel_misalign_yz", 10.0), 0.9 * 0.020);
 
   // After the flight (turns at 1.1-1.2 g give f_z its span): both where the
   // unit has them, within 3 sigma, and the sigma not claiming more than the

@@ -97,6 +97,17 @@ std::uint32_t flags_between(const ErrorSeries& s, double from, double to) {
   return m;
 }
 
+namespace {
+/// Column `name` of `line` under `header` (NaN and a test failure when it is missing).
+double value_in(const std::string& header, const std::string& line, const std::string& name, const std::string& nav_csv) {
+  const auto h = cells(header), v = cells(line);
+  const auto at = static_cast<std::size_t>(std::find(h.begin(), h.end(), name) - h.begin());
+  if (at < v.size()) return std::stod(v[at]);
+  ADD_FAILURE() << name << " not in " << nav_csv;
+  return NAN;
+}
+}  // namespace
+
 double nav_value(const std::string& nav_csv, const std::string& name, NavRow row) {
   std::ifstream in(nav_csv);
   std::string header, line, chosen;
@@ -106,11 +117,21 @@ double nav_value(const std::string& nav_csv, const std::string& name, NavRow row
     chosen = line;
     if (row == NavRow::First) break;
   }
-  const auto h = cells(header), v = cells(chosen);
-  const auto at = static_cast<std::size_t>(std::find(h.begin(), h.end(), name) - h.begin());
-  if (at < v.size()) return std::stod(v[at]);
-  ADD_FAILURE() << name << " not in " << nav_csv;
-  return NAN;
+  return value_in(header, chosen, name, nav_csv);
+}
+
+double nav_value_after(const std::string& nav_csv, const std::string& name, double after_first_s) {
+  std::ifstream in(nav_csv);
+  std::string header, line;
+  std::getline(in, header);
+  double t0 = NAN;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const double t = std::stod(line.substr(0, line.find(',')));
+    if (std::isnan(t0)) t0 = t;
+    if (t >= t0 + after_first_s) break;
+  }
+  return value_in(header, line, name, nav_csv);
 }
 
 }  // namespace sinu::test

@@ -26,5 +26,7 @@ std::uint32_t flags_between(const ErrorSeries& s, double from, double to);
 /// when the column is missing).
 enum class NavRow { First, Last };
 double nav_value(const std::string& nav_csv, const std::string& name, NavRow row);
+/// Column `name` of the first nav.csv row at least `after_first_s` past the first row.
+double nav_value_after(const std::string& nav_csv, const std::string& name, double after_first_s);
 
 }  // namespace sinu::test

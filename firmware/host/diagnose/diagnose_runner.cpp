@@ -531,8 +531,8 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
       // starts that component from the prior (zy's -46 +- 12 mrad, fitted
       // through f_y's linearisation residue, would hold a sideslipping flight
       // 4 sigma off).
-      for (std::size_t k = 0; k < m.estimate.size() && !from_file; ++k) {
-        if (!undriven(est::spec(e.effect), static_cast<Eigen::Index>(k), &current.excitation)) continue;
+      for (std::size_t k = 0; k < m.estimate.size(); ++k) {
+        if (from_file || !undriven(est::spec(e.effect), static_cast<Eigen::Index>(k), &current.excitation)) continue;
         m.estimate[k] = 0.0;
         m.sigma[k] = est::spec(e.effect).initial_sigma;
       }
