@@ -6,6 +6,7 @@
 // models with it. The streams (each solution, each innovation) go to
 // ReplayListeners while the replay runs.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -24,7 +25,14 @@ struct EffectEstimate {
 /// What the flight excited: the range of each IMU axis, the temperature, and
 /// whether there was a magnetometer (diagnose: which effects the data can test).
 struct Excitation {
+  // The specific force held for about a second (a one-pole low-pass, 1 s):
+  // what a scale or a misalignment turns into a velocity error the GNSS can
+  // see. Vibration integrates to nothing (the real drive's f_z spans 1.2 g
+  // sample to sample, 0.08 g held for a second).
+  static constexpr double kHoldTau_s = 1.0;
   Eigen::Vector3d f_min_m_s2 = Eigen::Vector3d::Constant(1e300), f_max_m_s2 = Eigen::Vector3d::Constant(-1e300);
+  Eigen::Vector3d f_held_m_s2 = Eigen::Vector3d::Zero();
+  double t_first_s = NAN, t_prev_s = NAN;
   Eigen::Vector3d w_min_rad_s = Eigen::Vector3d::Constant(1e300), w_max_rad_s = Eigen::Vector3d::Constant(-1e300);
   double temp_min_degC = 1e300, temp_max_degC = -1e300;
   std::uint64_t temp_samples = 0, mag_samples = 0;
