@@ -11,7 +11,7 @@ namespace sinu::est {
 /// diagnose --apply` found on an earlier flight), per component.
 struct EffectPrior {
   bool given = false;
-  std::array<double, 9> value{}, sigma{};
+  std::array<double, kMaxEffectDim> value{}, sigma{};
 };
 
 struct EffectTuning {

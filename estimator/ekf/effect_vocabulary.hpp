@@ -50,6 +50,13 @@ inline constexpr std::array<Eigen::Index, kEffectCount> kEffectDims = [] {
   for (std::size_t i = 0; i < kEffectCount; ++i) a[i] = component_count(kEffects[i].components);
   return a;
 }();
+/// The most components one effect has (a 3x3 matrix).
+inline constexpr std::size_t kMaxEffectDim = 9;
+static_assert([] {
+  for (const Eigen::Index d : kEffectDims)
+    if (static_cast<std::size_t>(d) > kMaxEffectDim) return false;
+  return true;
+}());
 inline constexpr Eigen::Index kMaxEffectStates = [] {
   Eigen::Index n = 0;
   for (const Eigen::Index d : kEffectDims) n += d;

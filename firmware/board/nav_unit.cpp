@@ -55,6 +55,15 @@ bool NavUnit::init(const NavUnitConfig& c, est::NavObserver* observer, std::stri
   for (std::size_t e = 0; e < est::kEffectCount; ++e) {
     if (c.relearn.has(static_cast<est::Effect>(e))) cfg.tuning.prior[e].given = false;
   }
+  for (std::size_t e = 0; e < est::kEffectCount; ++e) {
+    est::EffectPrior& p = cfg.tuning.prior[e];
+    if (c.held[e].none() || p.given) continue;
+    p.given = true;
+    for (std::size_t k = 0; k < p.value.size(); ++k) {
+      p.value[k] = 0.0;
+      p.sigma[k] = c.held[e][k] ? 0.0 : cfg.tuning.initial_sigma[e];
+    }
+  }
   cfg.use_mag = c.use_mag;
   cfg.vehicle = c.vehicle;
   cfg.mag_sigma_uT = c.mag_sigma_uT;

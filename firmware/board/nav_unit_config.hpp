@@ -5,6 +5,8 @@
 // sinu.toml and its options, `sinu replay` and `sinu diagnose` from theirs;
 // NavUnit::init turns it into a running navigator.
 #include <Eigen/Core>
+#include <array>
+#include <bitset>
 #include <cmath>
 #include <string>
 
@@ -24,6 +26,11 @@ struct NavUnitConfig {
   // Model-file effects learnt again from the vocabulary's prior instead of
   // the file's value (diagnose asks: has it changed since? an antenna moved).
   est::EffectSet relearn;
+  // Components of an effect held at its assumed value (zero) instead of
+  // learnt, unless a model file gives the effect: what the flight cannot
+  // determine (diagnose: a scale, misalignment or g-sensitivity term whose
+  // input axis never moved).
+  std::array<std::bitset<est::kMaxEffectDim>, est::kEffectCount> held{};
   // The fix's latency at arrival (initial value of the gps_latency state):
   // an NMEA epoch arrives some tens of ms after its time of validity.
   double gps_latency_s = 0.05;

@@ -232,7 +232,8 @@ void weigh_estimate(const replay::EffectEstimate& eff, const est::EffectPrior& f
       sg = std::hypot(sg, file.sigma[k]);
     }
     const double z = sg > 0.0 ? std::abs(v - prior) / sg : 0.0;
-    if (undriven(est::spec(effect), static_cast<Eigen::Index>(k), x)) continue;
+    c.held.push_back(undriven(est::spec(effect), static_cast<Eigen::Index>(k), x));
+    if (c.held.back()) continue;
     c.significance = std::max(c.significance, z);
     // Only a component the flight determines can be implausible: one it left
     // near its prior (an unexcited axis) wanders at its prior sigma, which may
@@ -256,8 +257,8 @@ void observability_notes(const CandidateResult& c, const replay::Excitation& x, 
         c.sigma_ratio[i] > 0.5
             ? fmt::format("{}: the flight left {:.0f} % of its prior sigma (weakly observable here)", what,
                           100.0 * c.sigma_ratio[i])
-            : fmt::format("{}: its sigma fell to {:.0f} % of the prior, but its input never moved: not determined by "
-                          "this flight (not weighed; --apply leaves it at its prior)", what, 100.0 * c.sigma_ratio[i]);
+            : fmt::format("{}: its input never moved: not determined by this flight (held at its assumed value; "
+                          "--apply leaves it at its prior)", what);
     // What the effect needs (effects/*.hpp excited_by): a scale the axis's own
     // range, a misalignment or a g-sensitivity the other axis's (the column).
     const Eigen::Index driver = driving_axis(spec, k);
@@ -265,7 +266,7 @@ void observability_notes(const CandidateResult& c, const replay::Excitation& x, 
     const bool gyro_driven = spec.excited_by == est::Triad::Gyro;
     if (accel_driven && driver >= 0) {
       const double lo = x.f_min_m_s2(driver), hi = x.f_max_m_s2(driver);
-      note += fmt::format("; specific force {} stayed within {:.1f}..{:.1f} m/s^2 (a span of {:.2f} g): a pull-up, a "
+      note += fmt::format("; specific force {} held within {:.1f}..{:.1f} m/s^2 for a second or more (a span of {:.2f} g): a pull-up, a "
                           "push-over or a bench tumble test (six positions) separates it from the bias",
                           kAxis[driver], lo, hi, (hi - lo) / kG);
     } else if (gyro_driven && driver >= 0) {
@@ -372,6 +373,16 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
       tuned = trial;
       out.process_noise_scale = scale;
     }
+  }
+  // What this flight cannot determine is held, not fitted: a term whose
+  // input axis never moved stays at its assumed value in every candidate and
+  // in the final model. (Free, the real drive's z scale, whose f_z never
+  // leaves 1 g for a second, wandered to 9 % on vibration and road grade and
+  // cost the scale candidate the x scale the drive does show.)
+  for (std::size_t e = 0; e < est::kEffectCount; ++e) {
+    for (Eigen::Index k = 0; k < est::kEffectDims[e]; ++k)
+      tuned.replay.unit.held[e][static_cast<std::size_t>(k)] =
+          undriven(est::spec(static_cast<est::Effect>(e)), k, &current.excitation);
   }
   out.baseline_innovations = std::move(current.series);
   RunScore walk_score;

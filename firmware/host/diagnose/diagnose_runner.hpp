@@ -51,6 +51,7 @@ struct CandidateResult {
   double significance = 0.0; // max |estimate - assumed value| / sigma
   std::vector<double> estimate, sigma;
   std::vector<double> sigma_ratio;  // per component: posterior / prior sigma (near 1: the flight did not reveal it)
+  std::vector<bool> held;           // per component: its input never moved, held at the assumed value (NavUnitConfig::held)
   InnovationStats stats;
   double rmse_pos_h_m = -1.0, rmse_att_deg = -1.0;  // against truth.csv (-1: none)
   double plausibility = 0.0; // max |estimate| / the vocabulary's plausible maximum over the significant

@@ -101,7 +101,7 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
          << " | " << estimate_text(c) << " | " << nis_cell(c.stats.source[0]) << " / " << nis_cell(c.stats.source[1])
          << " / " << nis_cell(c.stats.source[2]) << " | " << rmse_text(c.rmse_pos_h_m, "m") << " |\n";
       cands.push_back({{"effect", est::kEffectNames[e]}, {"nll_gain", c.nll_gain}, {"evidence_threshold", c.evidence_threshold},
-                       {"significance", c.significance}, {"estimate", c.estimate}, {"sigma", c.sigma},
+                       {"significance", c.significance}, {"estimate", c.estimate}, {"sigma", c.sigma}, {"held", c.held},
                        {"explains", c.explains(o.min_significance)}, {"plausibility", c.plausibility},
                        {"rmse_pos_h_m", c.rmse_pos_h_m}, {"changed_since_model_file", c.changed}});
     }

@@ -50,11 +50,12 @@ std::string value_text(est::Effect e, double value, double sigma, const char* pl
   return format_number("%.4g", value * scale) + " " + plus_minus + " " + format_number("%.2g", sigma * scale);
 }
 
-std::string vector_text(est::Effect e, const std::vector<double>& value, const std::vector<double>& sigma) {
+std::string vector_text(est::Effect e, const std::vector<double>& value, const std::vector<double>& sigma,
+                        const std::vector<bool>& held = {}) {
   std::string out;
   for (std::size_t i = 0; i < value.size() && i < sigma.size(); ++i) {
     if (i) out += ", ";
-    out += value_text(e, value[i], sigma[i], "+-");
+    out += i < held.size() && held[i] ? std::string("held") : value_text(e, value[i], sigma[i], "+-");
   }
   if (value.size() > 1) out = "[" + out + "]";
   return out + " " + est::spec(e).unit;
@@ -63,10 +64,11 @@ std::string vector_text(est::Effect e, const std::vector<double>& value, const s
 }  // namespace
 
 std::string estimate_component_text(const CandidateResult& c, std::size_t i, const char* plus_minus) {
+  if (i < c.held.size() && c.held[i]) return "held";
   return value_text(c.effect, c.estimate[i], c.sigma[i], plus_minus);
 }
 
-std::string estimate_text(const CandidateResult& c) { return vector_text(c.effect, c.estimate, c.sigma); }
+std::string estimate_text(const CandidateResult& c) { return vector_text(c.effect, c.estimate, c.sigma, c.held); }
 
 std::string candidate_name(const CandidateResult& c) {
   return std::string(est::spec(c.effect).name) + (c.changed ? " (re-learnt)" : "");
@@ -180,7 +182,9 @@ std::string implausible_fit_text(const CandidateResult& c) {
 
 std::vector<std::string> implausible_fits(const Diagnosis& d, double min_significance) {
   std::vector<std::string> out;
-  est::EffectSet told;
+  est::EffectSet told;  // an effect named in a later round (beside the one that fit first) is no such misfit
+  for (const est::Effect e : d.missing) told.add(e);
+  for (const est::Effect e : d.changed) told.add(e);
   for (const Round& round : d.rounds) {
     for (const CandidateResult& c : round.candidates) {
       if (!c.implausible_fit(min_significance) || told.has(c.effect)) continue;
