@@ -379,11 +379,16 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
   // in the final model. (Free, the real drive's z scale, whose f_z never
   // leaves 1 g for a second, wandered to 9 % on vibration and road grade and
   // cost the scale candidate the x scale the drive does show.)
+  bool baseline_holds = false;
   for (std::size_t e = 0; e < est::kEffectCount; ++e) {
     for (Eigen::Index k = 0; k < est::kEffectDims[e]; ++k)
       tuned.replay.unit.held[e][static_cast<std::size_t>(k)] =
           undriven(est::spec(static_cast<est::Effect>(e)), k, &current.excitation);
+    baseline_holds |= model.has(static_cast<est::Effect>(e)) && !known[e].given && tuned.replay.unit.held[e].any();
   }
+  // A baseline that carries such a term (--effects accel_scale) is scored
+  // as the candidates will be, else they would gain or lose by the hold.
+  if (baseline_holds && !replay_and_score(tuned.replay, model, baseline_dir, true, current, error)) return false;
   out.baseline_innovations = std::move(current.series);
   RunScore walk_score;
   if (!test_bias_walks(tuned.replay, model, current, out.bias_walk, walk_score, error)) return false;
