@@ -266,9 +266,12 @@ void observability_notes(const CandidateResult& c, const replay::Excitation& x, 
     const bool gyro_driven = spec.excited_by == est::Triad::Gyro;
     if (accel_driven && driver >= 0) {
       const double lo = x.f_min_m_s2(driver), hi = x.f_max_m_s2(driver);
-      note += fmt::format("; specific force {} held within {:.1f}..{:.1f} m/s^2 for a second or more (a span of {:.2f} g): a pull-up, a "
-                          "push-over or a bench tumble test (six positions) separates it from the bias",
-                          kAxis[driver], lo, hi, (hi - lo) / kG);
+      // What drives each body axis in flight (FRD): speed changes x, sideslip y, the load factor z.
+      static constexpr const char* kManoeuvre[] = {"a speed change (a climb-out, a brake)",
+                                                   "a sideslip or a knife-edge", "a pull-up, a push-over"};
+      note += fmt::format("; specific force {} held within {:.1f}..{:.1f} m/s^2 for a second or more (a span of {:.2f} "
+                          "g): {} or a bench tumble test (six positions) separates it from the bias",
+                          kAxis[driver], lo, hi, (hi - lo) / kG, kManoeuvre[driver]);
     } else if (gyro_driven && driver >= 0) {
       const double span = std::max(std::abs(x.w_min_rad_s(driver)), std::abs(x.w_max_rad_s(driver))) * est::kRadToDeg;
       note += fmt::format("; rate {} never exceeded {:.0f} deg/s: faster turns or rolls about that axis reveal it",
