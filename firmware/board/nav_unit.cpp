@@ -53,10 +53,8 @@ bool NavUnit::init(const NavUnitConfig& c, est::NavObserver* observer, std::stri
   cfg.effects = c.effects;
   if (!c.model_path.empty() && !read_model_file(c.model_path, cfg.effects, cfg.tuning.prior, error)) return false;
   for (std::size_t e = 0; e < est::kEffectCount; ++e) {
-    if (c.relearn.has(static_cast<est::Effect>(e))) cfg.tuning.prior[e].given = false;
-  }
-  for (std::size_t e = 0; e < est::kEffectCount; ++e) {
     est::EffectPrior& p = cfg.tuning.prior[e];
+    if (c.relearn.has(static_cast<est::Effect>(e))) p.given = false;
     if (c.held[e].none() || p.given) continue;
     p.given = true;
     for (std::size_t k = 0; k < p.value.size(); ++k) {

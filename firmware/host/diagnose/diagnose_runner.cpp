@@ -551,7 +551,7 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
       // through f_y's linearisation residue, would hold a sideslipping flight
       // 4 sigma off).
       for (std::size_t k = 0; k < m.estimate.size(); ++k) {
-        if (from_file || !undriven(est::spec(e.effect), static_cast<Eigen::Index>(k), &current.excitation)) continue;
+        if (from_file || !tuned.replay.unit.held[static_cast<std::size_t>(e.effect)][k]) continue;
         m.estimate[k] = 0.0;
         m.sigma[k] = est::spec(e.effect).initial_sigma;
       }

@@ -9,18 +9,19 @@
 namespace sinu::replay {
 
 void Excitation::add(const est::ImuSample& s) {
-  const bool usable = s.specific_force_b_m_s2.allFinite() && std::isfinite(s.t_s);
-  if (usable && std::isnan(t_prev_s)) {
-    t_first_s = s.t_s;
-    f_held_m_s2 = s.specific_force_b_m_s2;
-  } else if (usable) {
-    const double dt = std::max(0.0, s.t_s - t_prev_s);
-    f_held_m_s2 += dt / (kHoldTau_s + dt) * (s.specific_force_b_m_s2 - f_held_m_s2);
-  }
-  if (usable) t_prev_s = s.t_s;
-  if (usable && s.t_s - t_first_s >= 3.0 * kHoldTau_s) {  // past the start's transient
-    f_min_m_s2 = f_min_m_s2.cwiseMin(f_held_m_s2);
-    f_max_m_s2 = f_max_m_s2.cwiseMax(f_held_m_s2);
+  if (s.specific_force_b_m_s2.allFinite() && std::isfinite(s.t_s)) {
+    if (std::isnan(t_prev_s)) {
+      t_first_s = s.t_s;
+      f_held_m_s2 = s.specific_force_b_m_s2;
+    } else {
+      const double dt = std::max(0.0, s.t_s - t_prev_s);
+      f_held_m_s2 += dt / (kHoldTau_s + dt) * (s.specific_force_b_m_s2 - f_held_m_s2);
+    }
+    t_prev_s = s.t_s;
+    if (s.t_s - t_first_s >= 3.0 * kHoldTau_s) {  // past the start's transient
+      f_min_m_s2 = f_min_m_s2.cwiseMin(f_held_m_s2);
+      f_max_m_s2 = f_max_m_s2.cwiseMax(f_held_m_s2);
+    }
   }
   w_min_rad_s = w_min_rad_s.cwiseMin(s.angular_rate_b_rad_s);
   w_max_rad_s = w_max_rad_s.cwiseMax(s.angular_rate_b_rad_s);
