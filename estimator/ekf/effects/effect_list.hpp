@@ -13,6 +13,7 @@
 #include "estimator/ekf/effects/accel_temp_bias.hpp"
 #include "estimator/ekf/effects/gps_latency.hpp"
 #include "estimator/ekf/effects/gps_position_bias.hpp"
+#include "estimator/ekf/effects/gps_velocity_latency.hpp"
 #include "estimator/ekf/effects/gyro_bias.hpp"
 #include "estimator/ekf/effects/gyro_g_sensitivity.hpp"
 #include "estimator/ekf/effects/gyro_misalign.hpp"
@@ -37,7 +38,8 @@ using AllEffects = EffectList<effects::AccelScale, effects::GyroScale, effects::
                               effects::AccelTempBias, effects::GyroTempBias, effects::AccelBias, effects::GyroBias,
                               effects::GpsPositionBias, effects::MagEarthField, effects::MagHardIron,
                               effects::MagSoftIron, effects::AccelMisalign, effects::GyroMisalign,
-                              effects::GyroGSensitivity, effects::MagMisalign>;
+                              effects::GyroGSensitivity, effects::MagMisalign,
+                              effects::GpsVelocityLatency>;
 static_assert(AllEffects::size == kEffectCount, "every Effect has its file in AllEffects");
 
 /// Calls f.template operator()<E>() for every registered effect, in enum order.

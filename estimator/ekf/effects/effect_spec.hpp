@@ -13,9 +13,10 @@ namespace sinu::est {
 /// Every effect, in the order of effect_list.hpp (a static_assert checks it).
 enum class Effect : std::uint8_t {
   AccelScale, GyroScale, LeverArm, GpsLatency, AccelTempBias, GyroTempBias, AccelBias, GyroBias,
-  GpsPositionBias, MagEarthField, MagHardIron, MagSoftIron, AccelMisalign, GyroMisalign, GyroGSensitivity, MagMisalign
+  GpsPositionBias, MagEarthField, MagHardIron, MagSoftIron, AccelMisalign, GyroMisalign, GyroGSensitivity, MagMisalign,
+  GpsVelocityLatency
 };
-inline constexpr std::size_t kEffectCount = 16;
+inline constexpr std::size_t kEffectCount = 17;
 
 /// How an effect's states are indexed.
 enum class Components : std::uint8_t {

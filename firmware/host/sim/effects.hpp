@@ -9,6 +9,7 @@
 //                                                (M(i,j): axis i senses axis j; diagonal must be 0)
 //   lever_arm [m x3, body FRD]                   GPS antenna = IMU + C_nb l (position and velocity)
 //   gps_latency [s, 0..1]                        each fix is this much older than its time stamp
+//   gps_velocity_latency [s, 0..0.5]             its velocity this much older than its position (v - a tau)
 //   accel_temp_bias [m/s^2/degC x3]              bias += k (T - 25 degC)
 //   gyro_temp_bias [rad/s/degC x3]               bias += k (T - 25 degC)
 //   mag_hard_iron [uT x3]                        m += b
@@ -37,6 +38,7 @@ struct Effects {
   std::optional<Eigen::Matrix3d> accel_misalign_rad{}, gyro_misalign_rad{};
   std::optional<Eigen::Vector3d> lever_arm_b_m{};
   std::optional<double> gps_latency_s{};
+  std::optional<double> gps_velocity_latency_s{};
   std::optional<Eigen::Vector3d> accel_temp_bias_m_s2_per_degC{}, gyro_temp_bias_rad_s_per_degC{};
   std::optional<Eigen::Vector3d> mag_hard_iron_uT{};
   std::optional<Eigen::Matrix3d> mag_soft_iron{};

@@ -44,6 +44,7 @@ GpsReceiver::GpsReceiver(const GpsErrorModel& model, const Effects& fx, const Ut
       clock_(clock),
       lever_arm_b_m_(sensor_effects(fx).lever_arm_b_m),
       latency_s_(sensor_effects(fx).gps_latency_s),
+      velocity_latency_s_(sensor_effects(fx).gps_velocity_latency_s),
       rng_(seed, RngStream::Gps),
       corrupt_rng_(seed, RngStream::Corruption) {
   for (Eigen::Index i = 0; i < 3; ++i) gm_[i].init(model.gm_sigma_ned_m[i], model.gm_tau_s, fix_period_s, rng_);
@@ -76,6 +77,7 @@ bool GpsReceiver::fix(const TrueMotion& m, double stamp_s, dataset::NmeaLogWrite
   antenna(m, lat, lon, h, v_n);
   Eigen::Vector3d e_n;
   for (Eigen::Index i = 0; i < 3; ++i) e_n[i] = gm_[i].step(rng_) + model_.white_sigma_ned_m[i] * rng_.normal();
+  v_n -= m.accel_n_m_s2 * velocity_latency_s_;  // the velocity of tau earlier (to first order)
   for (Eigen::Index i = 0; i < 3; ++i) v_n[i] += model_.velocity_sigma_ned_m_s[i] * rng_.normal();
   lat += e_n.x() / (w::meridian_radius_m(lat) + h);
   lon += e_n.y() / ((w::transverse_radius_m(lat) + h) * std::cos(lat));

@@ -1,7 +1,8 @@
 #pragma once
 // The simulated GPS receiver. At each fix epoch (board time t_e, UTC time
 // stamp utc(t_e)) it measures the antenna (IMU + C_nb lever_arm) at
-// t_e - gps_latency, adds a position error (white + first-order GM, per NED
+// t_e - gps_latency (its velocity gps_velocity_latency earlier still), adds a
+// position error (white + first-order GM, per NED
 // axis) and a white velocity error, and emits GGA, RMC and GST sentences that
 // arrive at t_e + base_latency + i * sentence_spacing.
 #include <Eigen/Core>
@@ -55,6 +56,7 @@ class GpsReceiver {
   UtcClock clock_;
   Eigen::Vector3d lever_arm_b_m_;
   double latency_s_;
+  double velocity_latency_s_;  // the velocity this much older than the position
   Rng rng_, corrupt_rng_;
   GaussMarkov gm_[3];
   std::uint64_t sentences_ = 0, corrupted_ = 0;

@@ -11,6 +11,7 @@
 #include "firmware/host/sim/effects/accel_scale.hpp"
 #include "firmware/host/sim/effects/accel_temp_bias.hpp"
 #include "firmware/host/sim/effects/gps_latency.hpp"
+#include "firmware/host/sim/effects/gps_velocity_latency.hpp"
 #include "firmware/host/sim/effects/gyro_g_sensitivity.hpp"
 #include "firmware/host/sim/effects/gyro_misalign.hpp"
 #include "firmware/host/sim/effects/gyro_scale.hpp"
@@ -35,7 +36,7 @@ using AllSimEffects =
     SimEffectList<effects::AccelScale, effects::GyroScale, effects::AccelMisalign, effects::GyroMisalign,
                   effects::LeverArm, effects::GpsLatency, effects::AccelTempBias, effects::GyroTempBias,
                   effects::MagHardIron, effects::MagSoftIron, effects::GyroGSensitivity,
-                  effects::MagMisalign>;
+                  effects::MagMisalign, effects::GpsVelocityLatency>;
 
 inline constexpr std::array<std::string_view, AllSimEffects::size> kEffectNames = AllSimEffects::names;
 

@@ -22,6 +22,7 @@ struct SensorEffects {
   Eigen::Vector3d accel_temp_per_degC = Eigen::Vector3d::Zero(), gyro_temp_per_degC = Eigen::Vector3d::Zero();
   Eigen::Vector3d lever_arm_b_m = Eigen::Vector3d::Zero();       // antenna = IMU + C_nb l
   double gps_latency_s = 0.0;                                     // each fix this much older than its stamp
+  double gps_velocity_latency_s = 0.0;                            // its velocity this much older than its position
 };
 
 inline bool finite_number(const nlohmann::json& v, double& out) {
