@@ -85,7 +85,8 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
 void Navigator::push_imu(const ImuSample& raw) {
   // Screened before the prefilter: one NaN would poison a wavelet's registers.
   ImuSample s = raw;
-  switch (screen_.screen(raw, s.clipped_axes)) {
+  s.t_s -= cfg_.imu_latency_s;
+  switch (screen_.screen(s, s.clipped_axes)) {
     case ScreenVerdict::NonFinite:
       ++counters_.imu_invalid;
       events_ |= nav_flag::kImuDropped;
@@ -645,7 +646,9 @@ bool Navigator::fuse(AidingSource src, const Measurement& m, double t_meas) {
     filter_.feedback(dx_, nav_);
     // An epoch can be fused only while the horizon still holds its time of
     // validity: a latency estimate beyond it would make every later epoch late.
-    filter_.set_gps_latency(std::clamp(filter_.gps_latency_s(), 0.0, max_gps_latency_s()));
+    // Below zero the fix is valid after it arrived on the IMU's clock: the
+    // IMU's stamps are late (imu_latency_s), which diagnose reports.
+    filter_.set_gps_latency(std::clamp(filter_.gps_latency_s(), kMinGpsLatency_s, max_gps_latency_s()));
   } else {
     ++counters_.rejected[i];
     events_ |= kRejected[i];

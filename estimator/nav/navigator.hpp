@@ -42,6 +42,9 @@ namespace sinu::est {
 
 inline constexpr std::size_t kImuBufferCapacity = 512;   // 0.5 s at 1000 Hz
 inline constexpr std::size_t kGnssBufferCapacity = 32;   // 6 s of 5 Hz epochs
+// The learnt latency's floor: a fix valid up to this long after it arrived
+// (IMU stamps that late); the epoch waits in its buffer until then.
+inline constexpr double kMinGpsLatency_s = -0.3;
 
 /// What the unit is mounted in: a ground vehicle adds the non-holonomic
 /// constraint (no sideways, no vertical velocity in the body frame) and
@@ -80,6 +83,11 @@ struct NavigatorConfig {
   double max_horizon_s = 1.2;        // the GPS latency the vocabulary allows is 1 s
   double gate_sigma = 5.0;           // innovation gate [sigma]
   double gps_latency_s = 0.0;        // configured latency (initial value when estimated)
+  // The IMU's samples are stamped this much after the instant they describe
+  // (a sensor's filter delay, a driver's read latency, a recorder's clock
+  // offset): every sample is taken back by it, so the outputs are stamped
+  // at the instant they describe. A learnt GPS latency below zero says so.
+  double imu_latency_s = 0.0;
   Eigen::Vector3d lever_arm_b_m = Eigen::Vector3d::Zero();  // antenna minus IMU, body FRD
   bool fuse_velocity = true;
   VehicleKind vehicle = VehicleKind::Air;

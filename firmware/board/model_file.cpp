@@ -21,7 +21,8 @@ bool numbers(const nlohmann::json& v, std::size_t n, bool positive, std::array<d
 }  // namespace
 
 bool read_model_file(const std::string& path, est::EffectSet& effects,
-                     std::array<est::EffectPrior, est::kEffectCount>& priors, std::string& error) {
+                     std::array<est::EffectPrior, est::kEffectCount>& priors, double& imu_latency_s,
+                     std::string& error) {
   std::ifstream in(path);
   if (!in) {
     error = path + ": cannot open the model file";
@@ -52,13 +53,22 @@ bool read_model_file(const std::string& path, est::EffectSet& effects,
     effects.add(e);
     priors[static_cast<std::size_t>(e)] = p;
   }
+  if (j.contains("imu_latency_s")) {
+    const auto& v = j["imu_latency_s"];
+    if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < 0.0 || v.get<double>() > 1.0) {
+      error = path + ": imu_latency_s: expected a number of seconds in 0..1";
+      return false;
+    }
+    imu_latency_s = v.get<double>();
+  }
   return true;
 }
 
-bool write_model_file(const std::string& path, const std::vector<ModelEffect>& effects, const std::string& source,
-                      std::string& error) {
+bool write_model_file(const std::string& path, const std::vector<ModelEffect>& effects, double imu_latency_s,
+                      const std::string& source, std::string& error) {
   nlohmann::json j;
   j["source"] = source;
+  if (imu_latency_s > 0.0) j["imu_latency_s"] = imu_latency_s;
   j["effects"] = nlohmann::json::object();
   for (const ModelEffect& m : effects) {
     j["effects"][est::spec(m.effect).name] = {{"estimate", m.estimate}, {"sigma", m.sigma},

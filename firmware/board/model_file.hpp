@@ -5,6 +5,7 @@
 // (navigation.model_file) read it.
 //   {"effects": {"gyro_misalign": {"estimate": [6 numbers], "sigma": [6 numbers]},
 //                "gps_latency": {"estimate": [0.21], "sigma": [0.004]}, ...},
+//    "imu_latency_s": 0.12,   (optional: the IMU's samples stamped that late)
 //    "source": "what wrote it"}
 // Estimates are in the estimator's state units (effect_vocabulary.hpp: scale
 // [-], misalignment [rad], g-sensitivity [rad/s per m/s^2], ...), components
@@ -23,11 +24,15 @@ struct ModelEffect {
 
 /// Reads `path`: adds its effects to `effects` and their priors to `priors`.
 /// False with `error` naming the file and the key on any problem.
+/// Its imu_latency_s, when it has one, into `imu_latency_s` (left as is otherwise).
 bool read_model_file(const std::string& path, est::EffectSet& effects,
-                     std::array<est::EffectPrior, est::kEffectCount>& priors, std::string& error);
+                     std::array<est::EffectPrior, est::kEffectCount>& priors, double& imu_latency_s,
+                     std::string& error);
 
 /// Writes the effects (estimates and sigmas) as a model file.
-bool write_model_file(const std::string& path, const std::vector<ModelEffect>& effects, const std::string& source,
-                      std::string& error);
+/// Writes the effects (estimates and sigmas) as a model file, and the IMU's
+/// latency when it is above zero.
+bool write_model_file(const std::string& path, const std::vector<ModelEffect>& effects, double imu_latency_s,
+                      const std::string& source, std::string& error);
 
 }  // namespace sinu::board

@@ -34,6 +34,8 @@ struct NavUnitConfig {
   // The fix's latency at arrival (initial value of the gps_latency state):
   // an NMEA epoch arrives some tens of ms after its time of validity.
   double gps_latency_s = 0.05;
+  // The IMU's samples stamped this much late (NavigatorConfig::imu_latency_s).
+  double imu_latency_s = 0.0;
   Eigen::Vector3d lever_arm_b_m = Eigen::Vector3d::Zero();  // antenna minus IMU, body FRD
   double gate_sigma = 5.0;
   GnssSigmaConfig sigma;

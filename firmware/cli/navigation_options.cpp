@@ -32,6 +32,10 @@ void NavigationCliOptions::add_to(CLI::App& sub) {
                  "Default effect states to leave out (comma list, or none: no default effect)");
   sub.add_option("--gps-latency", opt.unit.gps_latency_s, "GPS latency: fix valid at arrival minus this [s]")
       ->capture_default_str();
+  sub.add_option("--imu-latency", opt.unit.imu_latency_s,
+                 "IMU samples stamped this much after the instant they describe [s] (diagnose says when)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   sub.add_option("--lever-arm", lever_arm, "Antenna minus IMU in body FRD [m], x,y,z")->delimiter(',');
   sub.add_option("--denoise", opt.unit.denoise,
                  "Wavelet denoiser in front of the INS: auto (calib.json's), none, or WAVELET:LEVELS (db4:3)")

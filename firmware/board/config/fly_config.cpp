@@ -86,6 +86,7 @@ void read_sections(TomlReader& r, FlyConfig& c) {
   nav.flag("magnetometer", c.navigation.magnetometer);
   nav.optional_number("mag_declination_deg", c.navigation.mag_declination_deg, -180.0, 180.0);
   nav.number("gps_latency_s", c.navigation.gps_latency_s, 0.0, 1.0);
+  nav.number("imu_latency_s", c.navigation.imu_latency_s, 0.0, 1.0);
   nav.number("accel_bias_walk_scale", c.navigation.accel_bias_walk_scale, 0.01, 1000.0);
   nav.number("gyro_bias_walk_scale", c.navigation.gyro_bias_walk_scale, 0.01, 1000.0);
 

@@ -49,6 +49,7 @@ struct FlyConfig {
     bool magnetometer = true;
     std::optional<double> mag_declination_deg;  // east +; unset: heading from the course
     double gps_latency_s = 0.05;
+    double imu_latency_s = 0.0;  // the IMU's samples stamped this much late
     // calib.json's bias random walks times these (`sinu diagnose` says when a bias moved more).
     double accel_bias_walk_scale = 1.0, gyro_bias_walk_scale = 1.0;
     bool operator==(const Navigation&) const = default;

@@ -50,6 +50,7 @@ bool nav_unit_config(const FlyConfig& c, NavUnitConfig& out, std::string& error)
   out.use_mag = n.magnetometer;
   if (n.mag_declination_deg) out.mag_declination_deg = *n.mag_declination_deg;
   out.gps_latency_s = n.gps_latency_s;
+  out.imu_latency_s = n.imu_latency_s;
   out.accel_bias_walk_scale = n.accel_bias_walk_scale;
   out.gyro_bias_walk_scale = n.gyro_bias_walk_scale;
   drivers::Icm20948Config imu;

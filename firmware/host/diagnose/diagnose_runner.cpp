@@ -324,7 +324,9 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
   // is named when this flight puts it elsewhere (an antenna moved, a
   // magnetometer remounted): "changed since the model file".
   std::array<est::EffectPrior, est::kEffectCount> known{};
-  if (!o.replay.unit.model_path.empty() && !board::read_model_file(o.replay.unit.model_path, model, known, error))
+  double file_imu_latency_s = 0.0;
+  if (!o.replay.unit.model_path.empty() &&
+      !board::read_model_file(o.replay.unit.model_path, model, known, file_imu_latency_s, error))
     return false;
   RunScore current;
   const std::string baseline_dir = (fs::path(o.out_dir) / "baseline").string();
@@ -520,6 +522,18 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
   for (std::size_t e = 0; e < est::kEffectCount; ++e)
     if (known[e].given) named_otherwise.add(static_cast<est::Effect>(e));
   out.carried = carried_findings(current.effects, named_otherwise, o);
+  // A latency below zero: the IMU's samples are late. The "after" is the
+  // final model with them taken back, as --apply's model file will run it
+  // (its outputs stamped at the instants they describe).
+  bool retimed = false;
+  for (const CarriedFinding& f : out.carried) {
+    if (f.imu_latency_s() <= 0.0) continue;
+    retimed = true;
+    DiagnoseOptions later = tuned;
+    later.replay.unit.imu_latency_s += f.imu_latency_s();
+    later.replay.unit.gps_latency_s = f.assumed[0];
+    if (!replay_and_score(later.replay, model, "", true, current, error)) return false;
+  }
   out.noise_findings = noise_findings(current.stats, out.model_changed());
   // Candidates the last round could not pin down: say so, and what would.
   if (!out.rounds.empty()) {
@@ -534,7 +548,7 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
   last.rmse_pos_h_m = current.rmse_pos_h_m;
   last.rmse_att_deg = current.rmse_att_deg;
   last.outage_drift_h_m = current.outage_drift_h_m;
-  if (out.rounds.empty() || out.rounds.back().found || out.bias_walk.named) out.rounds.push_back(last);
+  if (out.rounds.empty() || out.rounds.back().found || out.bias_walk.named || retimed) out.rounds.push_back(last);
   if (!given.replay.outages.empty() && !outage_drifts(tuned.replay, given.replay.outages, out, error)) return false;
   if (!o.apply_path.empty()) {
     // The final model's effects beyond the defaults (and the model file's, a
@@ -561,13 +575,21 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     // this flight's sigma: an airframe's hard iron changes with its battery and
     // payload, a receiver's latency with its settings, and the next flight's
     // states must still follow them.
+    // The IMU's latency this flight ran with, and what a latency below zero adds to it.
+    double imu_latency_s = o.replay.unit.imu_latency_s > 0.0 ? o.replay.unit.imu_latency_s : file_imu_latency_s;
     for (const CarriedFinding& f : out.carried) {
       if (model.has(f.effect) && !defaults.has(f.effect)) continue;  // written above (a model file's is never a finding)
       std::vector<double> sigma = f.sigma;
       for (double& s : sigma) s = std::max(s, est::spec(f.effect).report_resolution);
-      found.push_back({f.effect, f.estimate, sigma});
+      std::vector<double> estimate = f.estimate;
+      if (f.imu_latency_s() > 0.0) {  // the receiver as assumed, the rest the IMU's
+        imu_latency_s += f.imu_latency_s();
+        estimate = f.assumed;
+      }
+      found.push_back({f.effect, estimate, sigma});
     }
-    if (!board::write_model_file(o.apply_path, found, "sinu diagnose " + o.replay.in_dir, error)) return false;
+    if (!board::write_model_file(o.apply_path, found, imu_latency_s, "sinu diagnose " + o.replay.in_dir, error))
+      return false;
     out.model_file = o.apply_path;
   }
   return write_diagnosis(tuned, out, error) && write_diagnosis_html(tuned, out, error);

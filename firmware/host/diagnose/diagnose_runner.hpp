@@ -111,6 +111,14 @@ struct CarriedFinding {
   std::vector<double> assumed, estimate, sigma;  // assumed: the configured value, or 0 where none is configured
   double significance = 0.0;  // the largest |estimate - assumed| / sigma
   double deviation = 0.0;     // the largest |estimate - assumed| [state unit]
+  /// A GPS latency learnt below zero: the fixes are valid after they arrive
+  /// on the IMU's clock, which no receiver does; the IMU's samples are
+  /// stamped late, by the assumed latency minus the learnt one (the
+  /// receiver's own latency taken as configured) [s]. 0 otherwise.
+  double imu_latency_s() const {
+    return effect == est::Effect::GpsLatency && !estimate.empty() && estimate[0] < 0.0 ? assumed[0] - estimate[0]
+                                                                                        : 0.0;
+  }
 };
 
 /// The carried effects (a replay's `effects`: every state it had) with a

@@ -163,9 +163,15 @@ std::string carried_finding_text(const CarriedFinding& f) {
   if (f.assumed.size() > 1) assumed = "[" + assumed + "]";
   // What to do: the option that configures it, or the model file alone.
   const ConfiguredEffect* configured = configured_effect(f.effect);
-  const std::string advice = configured ? fmt::format("the configuration is wrong: {} {} or --apply", configured->option, option)
-                                        : "a property of this unit or airframe; --apply writes it, so the next flight "
-                                          "starts from it";
+  std::string advice = configured ? fmt::format("the configuration is wrong: {} {} or --apply", configured->option, option)
+                                  : "a property of this unit or airframe; --apply writes it, so the next flight "
+                                    "starts from it";
+  if (f.imu_latency_s() > 0.0) {
+    advice = fmt::format("below zero the fixes are valid after they arrive on the IMU's clock: the IMU's samples are "
+                         "stamped late, by {:.3f} s if the receiver's latency is the assumed {:.3g} s; --imu-latency "
+                         "{:.3f} or --apply",
+                         f.imu_latency_s(), f.assumed[0], f.imu_latency_s());
+  }
   return fmt::format("{} = {}, assumed {} {} ({:.0f} sigma, {} {} off; the model carries it and its states followed "
                      "it: {})",
                      sp.name, vector_text(f.effect, f.estimate, f.sigma), assumed, sp.unit, f.significance,
