@@ -14,6 +14,8 @@ recorded measurements as the simulator applies it to the true ones:
   lever_arm l:    every fix moves to the antenna: p + C_nb l, v + C_nb (w x l)
   gps_latency dt: every sentence arrives dt later (its UTC still the fix's instant,
                   as the dataset contract says; a real receiver's latency)
+  gps_velocity_latency tau: every RMC/VTG velocity is the log's own velocity tau
+                  earlier (interpolated between its epochs), on top of its own lag
 The recording's own errors stay in (the log's unit has its own scale factors,
 lever arm, ...): compare with a diagnosis of the untouched log, or start from
 its model file. --nav gives the attitude for the lever arm (a `sinu replay`
@@ -233,24 +235,49 @@ def arrival_text(arrival, latency):
     return f"{float(arrival) + latency:.{max(3, decimals(arrival))}f}"
 
 
+def velocity_series(src):
+    """(arrival times, vn, ve) of the log's RMC/VTG velocities, for the velocity's lag."""
+    t, vn, ve = [], [], []
+    with open(src, newline="") as fi:
+        for raw in fi:
+            arrival, _, s = raw.rstrip("\r\n").partition(",")
+            f, ok = split_sentence(s)
+            kind = f[0][2:] if ok else ""
+            ispeed, icourse = {"RMC": (7, 8), "VTG": (5, 1)}.get(kind, (None, None))
+            vel = own_velocity(f, ispeed, icourse) if ok else None
+            if vel is not None and (not t or float(arrival) > t[-1]):
+                t.append(float(arrival))
+                vn.append(vel[0])
+                ve.append(vel[1])
+    return np.array(t), np.array(vn), np.array(ve)
+
+
 def inject_gps(src, dst, fx, attitude, imu_t, imu_w):
     latency = float(fx.get("gps_latency", 0.0))
+    tau = float(fx.get("gps_velocity_latency", 0.0))
     lever = np.array(fx["lever_arm"], dtype=float) if "lever_arm" in fx else None
     if lever is not None and attitude is None:
         raise SystemExit("inject_effect: lever_arm needs --nav (a nav.csv or truth.csv with roll, pitch, yaw)")
+    series = velocity_series(src) if tau else None
     with open(src, newline="") as fi, open(dst, "w", newline="") as fo:
         for raw in fi:
             arrival, _, s = raw.rstrip("\r\n").partition(",")
             f, ok = split_sentence(s)
             kind = f[0][2:] if ok else ""
-            if lever is None or kind not in ("GGA", "RMC", "GLL", "VTG"):
+            if (lever is None and not tau) or kind not in ("GGA", "RMC", "GLL", "VTG"):
                 fo.write(f"{arrival_text(arrival, latency)},{s}\n")
                 continue
             f = list(f)
             ilat = {"GGA": 2, "RMC": 3, "GLL": 1}.get(kind)
             ispeed, icourse = {"RMC": (7, 8), "VTG": (5, 1)}.get(kind, (None, None))
             pos, vel = own_position(f, kind, ilat), own_velocity(f, ispeed, icourse)
-            C = attitude.C_nb(float(arrival))
+            if tau and vel is not None and len(series[0]) > 1:
+                at = float(arrival) - tau
+                vel = (float(np.interp(at, series[0], series[1])), float(np.interp(at, series[0], series[2])))
+            if lever is None:
+                pos, dv = None, np.zeros(3)
+            else:
+                C = attitude.C_nb(float(arrival))
             if pos is not None:
                 pos = shift(*pos, C @ lever)
                 f[ilat] = format_angle(pos[0], 2, f[ilat])
@@ -260,8 +287,9 @@ def inject_gps(src, dst, fx, attitude, imu_t, imu_w):
                 if kind == "GGA" and f[9]:
                     f[9] = f"{pos[2]:.{decimals(f[9])}f}"
             if vel is not None and len(imu_t):
-                w = imu_w[min(bisect.bisect_left(imu_t, float(arrival)), len(imu_t) - 1)]
-                dv = C @ np.cross(w, lever)
+                if lever is not None:
+                    w = imu_w[min(bisect.bisect_left(imu_t, float(arrival)), len(imu_t) - 1)]
+                    dv = C @ np.cross(w, lever)
                 vn, ve = vel[0] + dv[0], vel[1] + dv[1]
                 sp = math.hypot(vn, ve)
                 f[ispeed] = f"{sp * 3600.0 / 1852.0:.{decimals(f[ispeed])}f}"
@@ -287,7 +315,8 @@ def main():
         raise SystemExit(f"inject_effect: {a.effects}: expected a JSON object of effects")
     fx = fx.get("effects", fx)
     known = {"accel_scale", "gyro_scale", "accel_misalign", "gyro_misalign", "gyro_g_sensitivity", "accel_temp_bias",
-             "gyro_temp_bias", "mag_soft_iron", "mag_hard_iron", "mag_misalign", "lever_arm", "gps_latency"}
+             "gyro_temp_bias", "mag_soft_iron", "mag_hard_iron", "mag_misalign", "lever_arm", "gps_latency",
+             "gps_velocity_latency"}
     unknown = set(fx) - known
     if unknown:
         raise SystemExit(f"inject_effect: {a.effects}: unknown effect(s) {', '.join(sorted(unknown))}")

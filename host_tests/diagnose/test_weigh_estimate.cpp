@@ -94,6 +94,25 @@ TEST(CarriedFindings, ALatencyFarFromTheConfiguredOneIsNamedAndANearOneIsNot) {
   EXPECT_TRUE(find(0.149, named).empty()) << "already named otherwise";
 }
 
+// A latency learnt below zero is the IMU's lateness only when it is clearly
+// below (a receiver whose sentences arrive at the fix's instant learns zero,
+// give or take its sigma): then the IMU is late by the configured latency
+// minus the learnt one. The real drive: -0.061 +- 0.003 s, 0.111 s late.
+TEST(CarriedFindings, ALatencyBelowZeroIsTheImusLatenessOnlyWhenClearlySo) {
+  DiagnoseOptions o;
+  o.replay.unit.gps_latency_s = 0.05;
+  auto imu_latency = [&](double estimate, double sigma) {
+    const std::vector<replay::EffectEstimate> e{{est::Effect::GpsLatency, {estimate}, {sigma}}};
+    const auto f = diagnose::carried_findings(e, {}, o);
+    return f.empty() ? -1.0 : f[0].imu_latency_s();
+  };
+  EXPECT_DOUBLE_EQ(imu_latency(0.094, 0.003), 0.0) << "late fixes: the receiver's, not the IMU's";
+  EXPECT_DOUBLE_EQ(imu_latency(-0.004, 0.003), 0.0) << "zero within its noise: a finding, but no IMU lateness";
+  EXPECT_DOUBLE_EQ(imu_latency(-0.020, 0.003), 0.0) << "below zero by less than the 25 ms the latency is told at";
+  EXPECT_DOUBLE_EQ(imu_latency(-0.040, 0.02), 0.0) << "2 sigma";
+  EXPECT_NEAR(imu_latency(-0.061, 0.003), 0.111, 1e-12);
+}
+
 // A lever arm is judged on the components the flight determined: an axis left
 // at its prior sigma may sit far from the configuration without a finding.
 TEST(CarriedFindings, ALeverArmIsJudgedOnTheDeterminedComponents) {

@@ -14,6 +14,7 @@
 //    and its estimate is many sigmas from zero.
 // 3. Keep the best such effect, repeat (greedy) for a few rounds, and report
 //    the sequence with the error before and after.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -111,13 +112,16 @@ struct CarriedFinding {
   std::vector<double> assumed, estimate, sigma;  // assumed: the configured value, or 0 where none is configured
   double significance = 0.0;  // the largest |estimate - assumed| / sigma
   double deviation = 0.0;     // the largest |estimate - assumed| [state unit]
-  /// A GPS latency learnt below zero: the fixes are valid after they arrive
-  /// on the IMU's clock, which no receiver does; the IMU's samples are
-  /// stamped late, by the assumed latency minus the learnt one (the
-  /// receiver's own latency taken as configured) [s]. 0 otherwise.
+  /// A GPS latency learnt below zero (by its report resolution and 3 sigma:
+  /// a receiver whose sentences arrive at the fix's instant learns zero give
+  /// or take its noise): the fixes are valid after they arrive on the IMU's
+  /// clock, which no receiver does; the IMU's samples are stamped late, by
+  /// the assumed latency minus the learnt one (the receiver's own latency
+  /// taken as configured) [s]. 0 otherwise.
   double imu_latency_s() const {
-    return effect == est::Effect::GpsLatency && !estimate.empty() && estimate[0] < 0.0 ? assumed[0] - estimate[0]
-                                                                                        : 0.0;
+    if (effect != est::Effect::GpsLatency || estimate.empty() || sigma.empty()) return 0.0;
+    const double below = std::max(3.0 * sigma[0], est::spec(effect).report_resolution);
+    return estimate[0] < -below ? assumed[0] - estimate[0] : 0.0;
   }
 };
 
