@@ -56,5 +56,12 @@ if [ ${#missing[@]} -eq 0 ]; then
 fi
 echo "setup.sh: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
+# A mirror caught mid-sync ("File has unexpected size ... Mirror sync in
+# progress?") fails an update for a minute or two: try again before giving up.
+for attempt in 1 2 3 4; do
+  $SUDO apt-get update -qq && break
+  [ "$attempt" -lt 4 ] || { echo "setup.sh: apt-get update failed 4 times" >&2; exit 1; }
+  echo "setup.sh: apt-get update failed (attempt $attempt of 4); retrying in 30 s" >&2
+  sleep 30
+done
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
