@@ -235,6 +235,10 @@ def arrival_text(arrival, latency):
     return f"{float(arrival) + latency:.{max(3, decimals(arrival))}f}"
 
 
+# Where a sentence carries its speed [knots] and course: RMC fields 7, 8; VTG 5, 1.
+VELOCITY_FIELDS = {"RMC": (7, 8), "VTG": (5, 1)}
+
+
 def velocity_series(src):
     """(arrival times, vn, ve) of the log's RMC/VTG velocities, for the velocity's lag."""
     t, vn, ve = [], [], []
@@ -243,7 +247,7 @@ def velocity_series(src):
             arrival, _, s = raw.rstrip("\r\n").partition(",")
             f, ok = split_sentence(s)
             kind = f[0][2:] if ok else ""
-            ispeed, icourse = {"RMC": (7, 8), "VTG": (5, 1)}.get(kind, (None, None))
+            ispeed, icourse = VELOCITY_FIELDS.get(kind, (None, None))
             vel = own_velocity(f, ispeed, icourse) if ok else None
             if vel is not None and (not t or float(arrival) > t[-1]):
                 t.append(float(arrival))
@@ -269,7 +273,7 @@ def inject_gps(src, dst, fx, attitude, imu_t, imu_w):
                 continue
             f = list(f)
             ilat = {"GGA": 2, "RMC": 3, "GLL": 1}.get(kind)
-            ispeed, icourse = {"RMC": (7, 8), "VTG": (5, 1)}.get(kind, (None, None))
+            ispeed, icourse = VELOCITY_FIELDS.get(kind, (None, None))
             pos, vel = own_position(f, kind, ilat), own_velocity(f, ispeed, icourse)
             if tau and vel is not None and len(series[0]) > 1:
                 at = float(arrival) - tau

@@ -29,7 +29,11 @@ bool read_model_file(const std::string& path, est::EffectSet& effects,
                      std::array<est::EffectPrior, est::kEffectCount>& priors, double& imu_latency_s,
                      std::string& error);
 
-/// Writes the effects (estimates and sigmas) as a model file.
+/// The IMU latency a flight runs with: the configured one, else the model file's.
+inline double imu_latency_in_use(double configured_s, double model_file_s) {
+  return configured_s > 0.0 ? configured_s : model_file_s;
+}
+
 /// Writes the effects (estimates and sigmas) as a model file, and the IMU's
 /// latency when it is above zero.
 bool write_model_file(const std::string& path, const std::vector<ModelEffect>& effects, double imu_latency_s,

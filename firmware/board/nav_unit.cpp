@@ -51,13 +51,10 @@ bool NavUnit::init(const NavUnitConfig& c, est::NavObserver* observer, std::stri
     correction_ = std::make_unique<est::CorrectingPrefilter>(prefilter_.get(), accel.gain_inverse, accel.bias_m_s2);
   }
   cfg.effects = c.effects;
-  // The IMU's latency: as configured, else the model file's.
-  double imu_latency_s = c.imu_latency_s;
   double file_imu_latency_s = 0.0;
   if (!c.model_path.empty() &&
       !read_model_file(c.model_path, cfg.effects, cfg.tuning.prior, file_imu_latency_s, error))
     return false;
-  if (imu_latency_s == 0.0) imu_latency_s = file_imu_latency_s;
   for (std::size_t e = 0; e < est::kEffectCount; ++e) {
     est::EffectPrior& p = cfg.tuning.prior[e];
     if (c.relearn.has(static_cast<est::Effect>(e))) p.given = false;
@@ -83,7 +80,7 @@ bool NavUnit::init(const NavUnitConfig& c, est::NavObserver* observer, std::stri
   cfg.screen.gyro_range_rad_s = c.gyro_range_rad_s;
   cfg.gate_sigma = c.gate_sigma;
   cfg.gps_latency_s = c.gps_latency_s;
-  cfg.imu_latency_s = imu_latency_s;
+  cfg.imu_latency_s = imu_latency_in_use(c.imu_latency_s, file_imu_latency_s);
   cfg.lever_arm_b_m = c.lever_arm_b_m;
   cfg.horizon_s = std::max(0.3, c.gps_latency_s + 0.25);
   nav_ = std::make_unique<est::Navigator>();

@@ -328,6 +328,7 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
   if (!o.replay.unit.model_path.empty() &&
       !board::read_model_file(o.replay.unit.model_path, model, known, file_imu_latency_s, error))
     return false;
+  const double ran_imu_latency_s = board::imu_latency_in_use(o.replay.unit.imu_latency_s, file_imu_latency_s);
   RunScore current;
   const std::string baseline_dir = (fs::path(o.out_dir) / "baseline").string();
   DiagnoseOptions tuned = o;
@@ -530,7 +531,7 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     if (f.imu_latency_s() <= 0.0) continue;
     retimed = true;
     DiagnoseOptions later = tuned;
-    later.replay.unit.imu_latency_s += f.imu_latency_s();
+    later.replay.unit.imu_latency_s = ran_imu_latency_s + f.imu_latency_s();
     later.replay.unit.gps_latency_s = f.assumed[0];
     if (!replay_and_score(later.replay, model, "", true, current, error)) return false;
   }
@@ -576,7 +577,7 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
     // payload, a receiver's latency with its settings, and the next flight's
     // states must still follow them.
     // The IMU's latency this flight ran with, and what a latency below zero adds to it.
-    double imu_latency_s = o.replay.unit.imu_latency_s > 0.0 ? o.replay.unit.imu_latency_s : file_imu_latency_s;
+    double imu_latency_s = ran_imu_latency_s;
     for (const CarriedFinding& f : out.carried) {
       if (model.has(f.effect) && !defaults.has(f.effect)) continue;  // written above (a model file's is never a finding)
       std::vector<double> sigma = f.sigma;

@@ -2,9 +2,9 @@
 // The simulated GPS receiver. At each fix epoch (board time t_e, UTC time
 // stamp utc(t_e)) it measures the antenna (IMU + C_nb lever_arm) at
 // t_e - gps_latency (its velocity gps_velocity_latency earlier still), adds a
-// position error (white + first-order GM, per NED
-// axis) and a white velocity error, and emits GGA, RMC and GST sentences that
-// arrive at t_e + base_latency + i * sentence_spacing.
+// position error (white + first-order GM, per NED axis) and a white velocity
+// error, and emits GGA, RMC and GST sentences that arrive at
+// t_e + base_latency + i * sentence_spacing.
 #include <Eigen/Core>
 #include <cstdint>
 

@@ -4,6 +4,7 @@
 // reason on failure, drawing magnitudes, and the sensor-model terms the
 // effects set (SensorEffects), which ImuSensor and GpsReceiver apply.
 #include <Eigen/Core>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -29,6 +30,19 @@ inline bool finite_number(const nlohmann::json& v, double& out) {
   if (!v.is_number()) return false;
   out = v.get<double>();
   return std::isfinite(out);
+}
+
+/// A time in seconds within 0..max_s.
+inline bool read_seconds(const nlohmann::json& v, double max_s, double& out, std::string& why) {
+  if (!finite_number(v, out)) {
+    why = "expected a finite number of seconds";
+    return false;
+  }
+  if (out < 0.0 || out > max_s) {
+    why = fmt::format("{} s is outside 0..{} s", out, max_s);
+    return false;
+  }
+  return true;
 }
 
 inline bool read_vector(const nlohmann::json& v, Eigen::Vector3d& out, std::string& why) {

@@ -2,8 +2,6 @@
 // gps_velocity_latency [s, 0..0.5]: the receiver's velocity is this much
 // older than its position (a velocity averaged over the epoch interval is
 // the interval's middle), v - a tau.
-#include <fmt/format.h>
-
 #include "firmware/host/sim/effects/effect_value.hpp"
 #include "firmware/host/sim/effects.hpp"
 
@@ -13,17 +11,7 @@ struct GpsVelocityLatency {
   static constexpr const char* name = "gps_velocity_latency";
   static constexpr auto member = &Effects::gps_velocity_latency_s;  // where a flight's value lives
   using Value = double;
-  static bool parse(const nlohmann::json& v, Value& out, std::string& why) {
-    if (!finite_number(v, out)) {
-      why = "expected a finite number of seconds";
-      return false;
-    }
-    if (out < 0.0 || out > 0.5) {
-      why = fmt::format("{} s is outside 0..0.5 s", out);
-      return false;
-    }
-    return true;
-  }
+  static bool parse(const nlohmann::json& v, Value& out, std::string& why) { return read_seconds(v, 0.5, out, why); }
   static nlohmann::json to_json(const Value& v) { return v; }
   // Half a 5-Hz period and more: a tenth of a second is 1 m/s^2 x 0.1 m/s against 0.05 m/s of noise
   static Value draw(Rng& rng) { return rng.uniform(0.1, 0.25); }
