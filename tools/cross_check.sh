@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The companion computer's build, as CI checks it: cross-compile the board
 # program for aarch64 (SINU_BOARD_ONLY: fly, record, bench, calibrate), run the
-# target tests (estimator, drivers, HAL, outputs; not the 48-run Monte Carlo,
-# its preset excludes it) under qemu-aarch64, run the
+# target tests (estimator, drivers, HAL, outputs; not the 48-run Monte Carlo nor
+# the longest alignment runs, which the preset leaves to the host) under qemu, run the
 # program itself under qemu, build the arm64 .deb and check what it installs.
 #   tools/cross_check.sh [aarch64|armhf]     (default aarch64)
 # Installs what it needs with tools/setup.sh --cross (Debian packages only).
