@@ -192,6 +192,11 @@ void Navigator::process(const ImuSample& s) {
   // latency estimate (a car on a rough road: -0.09 s for +0.05 s). A gap's
   // mean says nothing of the acceleration at its end.
   if (!gap) accel_n_ += std::min(1.0, dt / 0.2) * ((nav_.v_n_m_s - v_before) / dt - accel_n_);
+  if (gap) {
+    velocity_history_.clear();
+  } else {
+    velocity_history_.add(nav_.t_s, nav_.v_n_m_s - v_before);
+  }
 
   PredictInput in;
   in.nav = &nav_;
@@ -398,8 +403,8 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
       GnssObservation zv = z;
       zv.sigma_vel_m_s = vel_noise_.sigma();
       const bool ok = fuse(AidingSource::GnssVelocity,
-                           gnss_velocity_measurement(filter_, nav_, now.angular_rate_b_rad_s, accel_n_, dt_back, zv,
-                                                     cfg_.gate_sigma),
+                           gnss_velocity_measurement(filter_, nav_, now.angular_rate_b_rad_s, accel_n_,
+                                                     velocity_lag_accel(t_meas), dt_back, zv, cfg_.gate_sigma),
                            t_meas);
       vel_noise_.learn(last_result_, t_meas - last_vel_update_t_s_);
       last_vel_update_t_s_ = t_meas;
@@ -440,6 +445,16 @@ void Navigator::check_vertical(const GnssObservation& z, double t_meas) {
   ++counters_.velocity_resets;
   ++counters_.vertical_resets;
   events_ |= nav_flag::kVelocityReset;
+}
+
+Eigen::Vector3d Navigator::velocity_lag_accel(double t_meas) const {
+  if (!filter_.layout().of(Effect::GpsVelocityLatency).active()) return accel_n_;
+  const double tau_s = filter_.view(Effect::GpsVelocityLatency).scalar();
+  Eigen::Vector3d mean = accel_n_;
+  if (!velocity_history_.mean_accel(t_meas, tau_s, mean)) return accel_n_;
+  // Over a few samples the mean is the IMU's vibration: below ~0.05 s the smoothed one takes over.
+  const double w = std::clamp((tau_s - 0.03) / 0.05, 0.0, 1.0);
+  return w * mean + (1.0 - w) * accel_n_;
 }
 
 double Navigator::turn_rate_rad_s(double t_s) const {

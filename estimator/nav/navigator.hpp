@@ -34,6 +34,7 @@
 #include "estimator/nav/noise_adapter.hpp"
 #include "estimator/nav/stillness.hpp"
 #include "estimator/nav/vehicle_detector.hpp"
+#include "estimator/nav/velocity_history.hpp"
 #include "estimator/nav/vertical_check.hpp"
 #include "estimator/prefilter/imu_prefilter.hpp"
 #include "estimator/util/ring_buffer.hpp"
@@ -252,6 +253,9 @@ class Navigator {
   void release_gyro_bias_about_vertical();
   /// Sets the position (and its covariance) from fix z, taken at dt_back before now.
   void seed_position_on_fix(const GnssObservation& z, double dt_back);
+  /// The mean acceleration over the GNSS velocity's lag behind its fix (the
+  /// gps_velocity_latency state), up to the fix's time of validity.
+  Eigen::Vector3d velocity_lag_accel(double t_meas) const;
   /// The GNSS course's rate (moving, a fix within 1 s), else the INS heading's [rad/s].
   double turn_rate_rad_s(double t_s) const;
   void learn_position_scale(double t_meas);
@@ -283,6 +287,7 @@ class Navigator {
   double mag_reject_since_s_ = -1.0;
   double last_mag_fused_t_s_ = 0.0, last_mag_sample_t_s_ = 0.0;
   Eigen::Vector3d accel_n_ = Eigen::Vector3d::Zero();
+  VelocityHistory velocity_history_;  // for a GNSS velocity older than its fix
   StateVec dx_;
   PredictAccumulator predict_;
   // Raw-stream bookkeeping (before the prefilter's delay).

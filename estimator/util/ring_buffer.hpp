@@ -18,6 +18,8 @@ class RingBuffer {
   }
   const T& front() const { return data_[head_]; }
   const T& back() const { return data_[(head_ + size_ - 1) % N]; }
+  /// The i-th oldest element (0: front), i < size().
+  const T& operator[](std::size_t i) const { return data_[(head_ + i) % N]; }
   void pop() {
     head_ = (head_ + 1) % N;
     --size_;

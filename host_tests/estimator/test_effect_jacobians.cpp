@@ -210,7 +210,7 @@ const SourceCase kSources[] = {
     {"gnss_velocity", {},
      [](const ErrorStateFilter& f, const NavState& nav, double dt_back) {
        return gnss_velocity_measurement(f, nav, Eigen::Vector3d(0.15, -0.1, 0.3), Eigen::Vector3d(1.0, -2.0, 0.5),
-                                        dt_back, a_fix(nav), 5.0);
+                                        Eigen::Vector3d(0.7, -1.6, 0.4), dt_back, a_fix(nav), 5.0);
      }},
     {"magnetometer", [] {
        EffectSet s;

@@ -70,6 +70,28 @@ bool GpsReceiver::emit(char* buf, std::size_t len, double arrival_s, dataset::Nm
   return out.write(arrival_s, std::string_view(buf, len));
 }
 
+void GpsReceiver::remember(const TrueMotion& m) {
+  if (velocity_latency_s_ <= 0.0) return;
+  double lat = 0.0, lon = 0.0, h = 0.0;
+  Eigen::Vector3d v_n;
+  antenna(m, lat, lon, h, v_n);
+  past_velocity_n_.emplace_back(m.t_s, v_n);
+  while (past_velocity_n_.front().first < m.t_s - 1.0) past_velocity_n_.pop_front();
+}
+
+Eigen::Vector3d GpsReceiver::velocity_before(const TrueMotion& m, const Eigen::Vector3d& v_now_n) const {
+  // The antenna's velocity tau before the fix's instant, between the IMU
+  // samples around it (linear: 25 ms at 40 Hz misses 1e-4 m/s through a
+  // roll-in); before the first second, to first order along the acceleration.
+  const double t = m.t_s - velocity_latency_s_;
+  for (std::size_t i = 1; i < past_velocity_n_.size(); ++i) {
+    const auto& [t1, v1] = past_velocity_n_[i];
+    const auto& [t0, v0] = past_velocity_n_[i - 1];
+    if (t0 <= t && t <= t1) return v0 + (v1 - v0) * ((t - t0) / std::max(t1 - t0, 1e-12));
+  }
+  return v_now_n - m.accel_n_m_s2 * velocity_latency_s_;
+}
+
 bool GpsReceiver::fix(const TrueMotion& m, double stamp_s, dataset::NmeaLogWriter& out) {
   namespace w = est::wgs84;
   double lat = 0.0, lon = 0.0, h = 0.0;
@@ -77,7 +99,7 @@ bool GpsReceiver::fix(const TrueMotion& m, double stamp_s, dataset::NmeaLogWrite
   antenna(m, lat, lon, h, v_n);
   Eigen::Vector3d e_n;
   for (Eigen::Index i = 0; i < 3; ++i) e_n[i] = gm_[i].step(rng_) + model_.white_sigma_ned_m[i] * rng_.normal();
-  v_n -= m.accel_n_m_s2 * velocity_latency_s_;  // the velocity of tau earlier (to first order)
+  if (velocity_latency_s_ > 0.0) v_n = velocity_before(m, v_n);
   for (Eigen::Index i = 0; i < 3; ++i) v_n[i] += model_.velocity_sigma_ned_m_s[i] * rng_.normal();
   lat += e_n.x() / (w::meridian_radius_m(lat) + h);
   lon += e_n.y() / ((w::transverse_radius_m(lat) + h) * std::cos(lat));

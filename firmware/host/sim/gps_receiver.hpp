@@ -7,6 +7,8 @@
 // t_e + base_latency + i * sentence_spacing.
 #include <Eigen/Core>
 #include <cstdint>
+#include <deque>
+#include <utility>
 
 #include "firmware/host/dataset/nmea_log.hpp"
 #include "firmware/host/sim/effects.hpp"
@@ -46,17 +48,22 @@ class GpsReceiver {
   /// One epoch stamped `stamp_s` from the motion sampled at stamp_s - latency.
   bool fix(const TrueMotion& sampled, double stamp_s, dataset::NmeaLogWriter& out);
   double latency_s() const { return latency_s_; }
+  /// The true motion at each IMU sample, for a velocity older than the fix
+  /// (gps_velocity_latency): the antenna's velocity of the last second.
+  void remember(const TrueMotion& m);
   std::uint64_t sentences() const { return sentences_; }
   std::uint64_t corrupted() const { return corrupted_; }
 
  private:
   bool emit(char* buf, std::size_t len, double arrival_s, dataset::NmeaLogWriter& out);
+  Eigen::Vector3d velocity_before(const TrueMotion& m, const Eigen::Vector3d& v_now_n) const;
 
   GpsErrorModel model_;
   UtcClock clock_;
   Eigen::Vector3d lever_arm_b_m_;
   double latency_s_;
   double velocity_latency_s_;  // the velocity this much older than the position
+  std::deque<std::pair<double, Eigen::Vector3d>> past_velocity_n_;  // (t, antenna v), last second
   Rng rng_, corrupt_rng_;
   GaussMarkov gm_[3];
   std::uint64_t sentences_ = 0, corrupted_ = 0;

@@ -183,6 +183,7 @@ bool run_simulation(const SimOptions& options, SimResult& result, dataset::Diagn
     for (std::uint64_t k = 0; k < n_imu; ++k) {
       const double t = t0 + static_cast<double>(k) * dt;
       const TrueMotion m = traj.motion();
+      gps.remember(m);
       fill_truth_row(row, m);
       if (!truth_out.write(row)) return writer_error(truth_out.error(), err);
       fill_imu_row(row, t, imu.sample(m.specific_force_b_m_s2, m.omega_ib_b_rad_s, m.C_nb, temp.at(t - t0)));
