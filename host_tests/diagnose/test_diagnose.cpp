@@ -249,6 +249,9 @@ TEST(Diagnose, NamesAHiddenVelocityLatencyAndMeasuresIt) {
   const auto d = diagnose(dir, R"({"gps_velocity_latency": 0.15})", {"--apply"});
   ASSERT_GE(d["missing_effects"].size(), 1u) << d.dump(1);
   EXPECT_EQ(d["missing_effects"][0], "gps_velocity_latency");
+  // No bench session given: the finding says the noise model was not this unit's.
+  EXPECT_FALSE(d["calibrated"].get<bool>());
+  EXPECT_NE(d.value("caution", "").find("without --calib"), std::string::npos) << d.dump(1);
   // The turns' 2-4 m/s^2 against 0.05 m/s of velocity noise at 5 Hz: a few
   // milliseconds (a tenth of the value is a wide bound; within 3 sigma).
   const auto& c = first_candidate(d);
@@ -356,6 +359,7 @@ TEST(Diagnose, NamesNothingOnAFlightWithoutAHiddenEffect) {
   TempDir dir;
   const auto d = diagnose(dir, "");
   EXPECT_EQ(d["missing_effects"].size(), 0u) << d.dump(1);
+  EXPECT_FALSE(d.contains("caution")) << "nothing named, nothing to doubt: " << d.dump(1);
   EXPECT_EQ(d["carried_findings"].size(), 0u) << "the configured latency is the simulator's, no hard iron: " << d.dump(1);
   for (const auto& c : d["rounds"][0]["candidates"]) EXPECT_FALSE(c["explains"].get<bool>()) << c.dump();
 }
@@ -387,6 +391,8 @@ TEST(Diagnose, NamesAHiddenGyroMisalignmentAndTheAppliedModelLowersTheOutageDrif
   const auto d = nlohmann::json::parse(in);
   ASSERT_GE(d["missing_effects"].size(), 1u) << d.dump(1);
   EXPECT_EQ(d["missing_effects"][0], "gyro_misalign");
+  EXPECT_TRUE(d["calibrated"].get<bool>());
+  EXPECT_FALSE(d.contains("caution")) << "the unit's own noise model: " << d.dump(1);
   const auto& c = first_candidate(d);
   const double truth[6] = {0.010, -0.008, 0.012, 0.009, -0.011, 0.007};  // xy xz yx yz zx zy
   for (std::size_t i = 0; i < 6; ++i) {

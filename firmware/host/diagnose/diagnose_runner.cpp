@@ -368,6 +368,7 @@ bool run_diagnosis(const DiagnoseOptions& given, Diagnosis& out, std::string& er
   // scale of its coloured-error variances by maximum likelihood of the
   // innovations (the same criterion that then judges the candidates).
   out.process_noise_scale = 1.0;
+  out.calibrated = !o.replay.unit.calib_path.empty();
   if (o.tune_process_noise && o.replay.unit.calib_path.empty()) {
     for (const double scale : {0.3, 0.1, 0.03, 0.01}) {
       DiagnoseOptions trial = tuned;

@@ -137,6 +137,7 @@ struct Diagnosis {
   double vel_sigma_m_s = 0.0, vel_sigma_given_m_s = 0.0;  // GNSS velocity sigma, likewise
   double pos_sigma_scale = 1.0, pos_sigma_scale_given = 1.0;  // on the receiver's stated position sigma, likewise
   double process_noise_scale = 1.0;  // chosen by likelihood (1 with a calib.json)
+  bool calibrated = false;           // the IMU's noise from a calib.json (a bench session of the unit)
   std::vector<Round> rounds;
   std::vector<est::Effect> missing;  // in the order found
   std::vector<est::Effect> changed;  // model-file effects this flight says have changed

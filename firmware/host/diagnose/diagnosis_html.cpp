@@ -406,6 +406,7 @@ std::string findings_section(const Diagnosis& d) {
   std::string out = "<section id=\"findings\"><h2>Noise levels and what the flight could not show</h2>\n";
   std::vector<std::string> noise = tuned_noise_findings(d);
   if (const std::string p = process_noise_text(d); !p.empty()) noise.push_back(p);
+  if (const std::string u = uncalibrated_text(d); !u.empty()) noise.push_back(u);
   noise.insert(noise.end(), d.noise_findings.begin(), d.noise_findings.end());
   out += "<h3>Noise findings</h3>";
   out += noise.empty() ? "<p>Every source's NIS per component is within 0.7-1.3: its innovations are as large as its "

@@ -36,6 +36,7 @@ std::string diagnosis_summary(const DiagnoseOptions& o, const Diagnosis& d) {
   for (const CarriedFinding& f : d.carried) out += "  carried: " + carried_finding_text(f) + "\n";
   for (const std::string& n : implausible_fits(d, o.min_significance)) out += "  not named: " + n + "\n";
   for (const std::string& n : d.noise_findings) out += "  noise: " + n + "\n";
+  if (const std::string u = uncalibrated_text(d); !u.empty()) out += "  caution: " + u + "\n";
   for (const Diagnosis::Skipped& s : d.skipped)
     out += "  not tested: " + std::string(est::spec(s.effect).name) + " (" + s.reason + ")\n";
   const Round& last = d.rounds.back();
@@ -146,6 +147,8 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
   }
   j["weakly_observable"] = d.observability;
   j["noise_findings"] = d.noise_findings;
+  j["calibrated"] = d.calibrated;
+  if (const std::string u = uncalibrated_text(d); !u.empty()) j["caution"] = u;
   if (d.bias_walk.tested) {
     md << "## Did a bias move?\n\nThe baseline replayed with each sensor's bias random walk " << kWalkScalesText
        << " times calib.json's: " << bias_walk_text(d.bias_walk) << ".\n\n";

@@ -145,6 +145,14 @@ std::string process_noise_text(const Diagnosis& d) {
          format_number("%.2g", d.process_noise_scale) + " (maximum likelihood of the innovations)";
 }
 
+std::string uncalibrated_text(const Diagnosis& d) {
+  // A simulated unit's 0.04-deg/s gyro oscillation (12-s period, which its
+  // bench session's AR model carries) was named a 3 % gyro y scale without it.
+  if (d.calibrated || !d.model_changed()) return "";
+  return "without --calib the IMU's noise is the built-in model's, not this unit's: an effect named here may "
+         "stand for noise that model lacks; a bench session of the unit (sinu calibrate) tells them apart";
+}
+
 std::string missing_effect_text(const CandidateResult& c) {
   const std::string value = c.changed ? " has changed since the model file: " + estimate_text(c) + ", was " +
                                             vector_text(c.effect, c.file_estimate, c.file_sigma)

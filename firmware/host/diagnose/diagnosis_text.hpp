@@ -36,6 +36,8 @@ std::string worst_cell(const InnovationStats& s);
 std::vector<std::string> tuned_noise_findings(const Diagnosis& d);
 /// Without calib.json: the scale chosen for the built-in sensor model ("" if none).
 std::string process_noise_text(const Diagnosis& d);
+/// Without a calibration an effect named may stand for noise the built-in model lacks: said when one is.
+std::string uncalibrated_text(const Diagnosis& d);
 
 /// The candidate's name in tables: "lever_arm", or "lever_arm (re-learnt)"
 /// for a model-file effect learnt again from its prior.
