@@ -9,7 +9,7 @@
 //                                                (M(i,j): axis i senses axis j; diagonal must be 0)
 //   lever_arm [m x3, body FRD]                   GPS antenna = IMU + C_nb l (position and velocity)
 //   gps_latency [s, 0..1]                        each fix is this much older than its time stamp
-//   gps_velocity_latency [s, 0..0.5]             its velocity this much older than its position (v - a tau)
+//   gps_velocity_latency [s, 0..0.5]             its velocity this much older than its position (true v(t - tau))
 //   accel_temp_bias [m/s^2/degC x3]              bias += k (T - 25 degC)
 //   gyro_temp_bias [rad/s/degC x3]               bias += k (T - 25 degC)
 //   mag_hard_iron [uT x3]                        m += b

@@ -24,7 +24,8 @@ struct GnssVelocityTerms {
 
 Measurement gnss_velocity_measurement(const ErrorStateFilter& filter, const NavState& nav,
                                       const Eigen::Vector3d& w_b, const Eigen::Vector3d& accel_n,
-                                      const Eigen::Vector3d& lag_accel_n, double dt_back, const GnssObservation& z, double gate_sigma) {
+                                      const Eigen::Vector3d& lag_accel_n, double dt_back, const GnssObservation& z,
+                                      double gate_sigma) {
   const StateLayout& L = filter.layout();
   const Eigen::Matrix3d C = nav.C_nb();
   Measurement m;

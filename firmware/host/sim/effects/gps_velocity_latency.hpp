@@ -1,7 +1,8 @@
 #pragma once
 // gps_velocity_latency [s, 0..0.5]: the receiver's velocity is this much
 // older than its position (a velocity averaged over the epoch interval is
-// the interval's middle), v - a tau.
+// the interval's middle): the antenna's true velocity tau earlier
+// (GpsReceiver keeps the last second of it).
 #include "firmware/host/sim/effects/effect_value.hpp"
 #include "firmware/host/sim/effects.hpp"
 
