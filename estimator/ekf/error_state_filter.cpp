@@ -103,6 +103,7 @@ void ErrorStateFilter::init(const StateLayout& layout, const SensorNoise& noise,
     for (Eigen::Index j = 0; j < s.size; ++j) P_(s.start + j, s.start + j) = sig * sig;
   }
   gps_bias_sigma_ned_m_ = Eigen::Vector3d::Constant(tuning.sigma(Effect::GpsPositionBias));
+  gps_white_fraction_ned_ = Eigen::Vector3d::Constant(1.0 - tuning.gps_bias_variance_fraction);
   value_.fill(0.0);
   sensor_hat_ = StateVec::Zero(layout.sensor.size);
   ar_clock_s_ = 0.0;
@@ -316,8 +317,13 @@ BodyRates ErrorStateFilter::compensate(const ImuSample& raw) const {
   return out;
 }
 
-void ErrorStateFilter::set_gps_bias_sigma(const Eigen::Vector3d& fix_sigma_ned_m, double dt_s) {
-  const Eigen::Vector3d target = std::sqrt(tuning_.gps_bias_variance_fraction) * fix_sigma_ned_m;
+void ErrorStateFilter::set_gps_bias_sigma(const Eigen::Vector3d& fix_sigma_ned_m, double dt_s,
+                                          const Eigen::Vector3d& white_scale) {
+  constexpr double kMinCorrelatedFraction = 0.01;
+  gps_white_fraction_ned_ = (1.0 - tuning_.gps_bias_variance_fraction) * white_scale.cwiseAbs2();
+  const Eigen::Vector3d correlated =
+      (Eigen::Vector3d::Ones() - gps_white_fraction_ned_).cwiseMax(kMinCorrelatedFraction);
+  const Eigen::Vector3d target = correlated.cwiseSqrt().cwiseProduct(fix_sigma_ned_m);
   if (!(dt_s > 0.0)) {  // the first fix: the GM starts in its stationary distribution
     gps_bias_sigma_ned_m_ = target;
     if (layout_.has(Effect::GpsPositionBias)) reset_block(layout_.of(Effect::GpsPositionBias), target);

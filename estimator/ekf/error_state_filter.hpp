@@ -76,9 +76,16 @@ class ErrorStateFilter {
   Eigen::Vector3d gps_position_bias_ned_m() const { return view(Effect::GpsPositionBias).vec3(); }
   /// The GM sigma of the receiver's correlated error, per NED axis.
   Eigen::Vector3d gps_bias_sigma_ned_m() const { return gps_bias_sigma_ned_m_; }
-  /// Sets the correlated error's level from a fix's stated sigma (its
-  /// tuning fraction): at once (and P with it) when dt_s <= 0, else averaged.
-  void set_gps_bias_sigma(const Eigen::Vector3d& fix_sigma_ned_m, double dt_s);
+  /// Sets the correlated error's level from a fix's stated sigma: at once
+  /// (and P with it) when dt_s <= 0, else averaged. The stated variance is
+  /// split: the white part is (1 - the tuning fraction) x white_scale^2 of it
+  /// (white_scale learnt from the innovations: a receiver whose error is
+  /// whiter than assumed), the correlated part what is left (at least 1 %).
+  void set_gps_bias_sigma(const Eigen::Vector3d& fix_sigma_ned_m, double dt_s,
+                          const Eigen::Vector3d& white_scale = Eigen::Vector3d::Ones());
+  /// The share of a fix's stated variance that is white, per NED axis (may
+  /// exceed 1: a receiver that understates its error).
+  Eigen::Vector3d gps_white_fraction_ned() const { return gps_white_fraction_ned_; }
   /// The position was just set so that measurement `m` (a GNSS fix; its
   /// position columns the identity) fits exactly: its error is then the
   /// measurement's, e_p = -(H_other e_other + w). It shares the receiver's
@@ -189,6 +196,7 @@ class ErrorStateFilter {
   // effects' own components (effects/*.hpp); zero is the nominal sensor.
   std::array<double, kMaxEffectStates> value_{};
   Eigen::Vector3d gps_bias_sigma_ned_m_ = Eigen::Vector3d::Ones();
+  Eigen::Vector3d gps_white_fraction_ned_ = Eigen::Vector3d::Constant(0.1);
   double temp_ref_degC_ = 0.0;
 };
 

@@ -58,6 +58,10 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   mag_noise_.configure(cfg.mag_noise, cfg.mag_sigma_uT);
   pos_scale_h_.configure(cfg.gnss_position_scale, 1.0);
   pos_scale_v_.configure(cfg.gnss_position_scale, 1.0);
+  NoiseAdapterConfig white = cfg.gnss_white_scale;  // at most all white
+  white.max_sigma = std::min(white.max_sigma, 1.0 / std::sqrt(1.0 - cfg.tuning.gps_bias_variance_fraction));
+  white_h_.configure(white, 1.0);
+  white_v_.configure(white, 1.0);
   last_pos_scale_t_s_ = last_stated_t_s_ = kNever;
   course_t_s_ = heading_yaw_t_s_ = kNever;
   course_rate_rad_s_ = yaw_rate_rad_s_ = 0.0;
@@ -281,7 +285,7 @@ void Navigator::align(const ImuSample& s, double dt) {
                                       std::max(res.rest_specific_force_sigma_m_s2, 0.01));
     }
     filter_.set_reference_temperature(res.temp_ref_degC);
-    filter_.set_gps_bias_sigma(z.sigma_ned_m, 0.0);
+    filter_.set_gps_bias_sigma(z.sigma_ned_m, 0.0, white_scale(z));
     seed_position_on_fix(z, s.t_s - (z.arrival_s - latency));
     recovery_.restart(s.t_s);
     vertical_.restart();
@@ -351,7 +355,7 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
         z.sigma_ned_m.head<2>() *= pos_scale_h_.sigma();
         z.sigma_ned_m.z() *= pos_scale_v_.sigma();
       }
-      filter_.set_gps_bias_sigma(z.sigma_ned_m, t_meas - last_gnss_pos_t_s_);
+      filter_.set_gps_bias_sigma(z.sigma_ned_m, t_meas - last_gnss_pos_t_s_, white_scale(z));
       last_gnss_pos_t_s_ = t_meas;
       bool ok = fuse(AidingSource::GnssPosition,
                      gnss_position_measurement(filter_, nav_, dt_back, z, cfg_.gate_sigma), t_meas);
@@ -371,7 +375,7 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
       // without one) is fused north and east; it neither resets the solution
       // (a reset seeds the position from a 3-D fix) nor checks the vertical.
       if (z.has_height) {
-        if (z.sigma_is_guess) learn_position_scale(t_meas);
+        learn_position_noise(z, t_meas);
         recover(recovery_.on_position(t_meas, ok, innovation_h, z.sigma_ned_m.head<2>().norm()), z, dt_back, t_meas);
         check_vertical(z, t_meas);
       } else if (ok) {
@@ -413,14 +417,24 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
   }
 }
 
-// The latest position update, made with a guessed sigma, teaches its factor
-// (rows N, E horizontally; D vertically).
-void Navigator::learn_position_scale(double t_meas) {
+// The latest position update teaches the factor on its sigma: on the whole
+// of a guessed one, on the white part of a stated one (rows N, E
+// horizontally; D vertically).
+void Navigator::learn_position_noise(const GnssObservation& z, double t_meas) {
   if (last_result_.rows < 3) return;
+  // Without the correlated-error states the whole stated variance is white.
+  if (!z.sigma_is_guess && !filter_.layout().has(Effect::GpsPositionBias)) return;
   const double dt = last_pos_scale_t_s_ == kNever ? 0.0 : t_meas - last_pos_scale_t_s_;
-  pos_scale_h_.learn_scale(last_result_, 0, 2, dt);
-  pos_scale_v_.learn_scale(last_result_, 2, 1, dt);
+  NoiseAdapter& h = z.sigma_is_guess ? pos_scale_h_ : white_h_;
+  NoiseAdapter& v = z.sigma_is_guess ? pos_scale_v_ : white_v_;
+  h.learn_scale(last_result_, 0, 2, dt);
+  v.learn_scale(last_result_, 2, 1, dt);
   last_pos_scale_t_s_ = t_meas;
+}
+
+Eigen::Vector3d Navigator::white_scale(const GnssObservation& z) const {
+  if (z.sigma_is_guess) return Eigen::Vector3d::Ones();  // the whole sigma is scaled instead
+  return {white_h_.sigma(), white_h_.sigma(), white_v_.sigma()};
 }
 
 void Navigator::begin_reset(double t_meas) {

@@ -131,6 +131,13 @@ struct NavigatorConfig {
   // without GST from a receiver that sent one within stated_sigma_hold_s
   // takes that one instead (uav_log171's u-blox skips 17 of 959).
   NoiseAdapterConfig gnss_position_scale{true, 60.0, 0.2, 4.0};
+  // A stated sigma (GST) is honoured as the fix's total error; its split into
+  // white and correlated (EffectTuning::gps_bias_variance_fraction) is a
+  // guess, so a factor on the white part is learnt, horizontal and vertical:
+  // from 1 (the split as tuned) up to all of the stated variance white (the
+  // cap follows from the fraction). An independent simulator's white-only
+  // receiver with an honest GST was otherwise rejected thousands of times.
+  NoiseAdapterConfig gnss_white_scale{true, 60.0, 1.0, 1e9};
   double stated_sigma_hold_s = 5.0;
   double mag_period_s = 0.1;          // fuse at most this often (10 Hz)
   // A magnetometer rejected this long while the GNSS velocity vouches for the
@@ -220,6 +227,8 @@ class Navigator {
   double mag_sigma_uT() const { return mag_noise_.sigma(); }
   /// The factor on unstated GNSS position sigmas (1 while every fix had GST).
   Eigen::Vector2d gnss_position_scale() const { return {pos_scale_h_.sigma(), pos_scale_v_.sigma()}; }
+  /// The learnt factor on the white part of stated (GST) sigmas, horizontal and vertical.
+  Eigen::Vector2d gnss_white_scale() const { return {white_h_.sigma(), white_v_.sigma()}; }
 
  private:
   void push_filtered(ImuSample s);
@@ -258,7 +267,8 @@ class Navigator {
   Eigen::Vector3d velocity_lag_accel(double t_meas) const;
   /// The GNSS course's rate (moving, a fix within 1 s), else the INS heading's [rad/s].
   double turn_rate_rad_s(double t_s) const;
-  void learn_position_scale(double t_meas);
+  void learn_position_noise(const GnssObservation& z, double t_meas);
+  Eigen::Vector3d white_scale(const GnssObservation& z) const;
   void update_health(double t_now, double dt);
   void emit();
 
@@ -302,7 +312,7 @@ class Navigator {
   double horizontal_accel_m_s2_ = 0.0;                   // smoothed (1 s) horizontal specific force, NED
   double accel_diff_var_ = 0.0, gyro_diff_var_ = 0.0;    // mean squared sample-to-sample differences
   StateMask frozen_;
-  NoiseAdapter vel_noise_, mag_noise_, pos_scale_h_, pos_scale_v_;
+  NoiseAdapter vel_noise_, mag_noise_, pos_scale_h_, pos_scale_v_, white_h_, white_v_;
   Stillness stillness_;
   VehicleDetector vehicle_;
   double last_gnss_speed_m_s_ = 1e9, last_zupt_t_s_ = 0.0, last_nhc_t_s_ = 0.0;

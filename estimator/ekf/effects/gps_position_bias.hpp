@@ -3,7 +3,8 @@
 // orbits), NED [m]: a first-order Gauss-Markov process per axis whose level
 // is a fraction of the fix's stated variance (EffectTuning), fix = antenna + b.
 // The fix's variance is split: the correlated part lives in these states,
-// the rest is white.
+// the rest is white (ErrorStateFilter::set_gps_bias_sigma: the split is
+// learnt from the innovations).
 #include <cmath>
 
 #include "estimator/ekf/effects/effect_spec.hpp"
@@ -17,7 +18,7 @@ struct GpsPositionBias {
     if (!t.slice.active()) return;
     t.measurement_offset_n += v.vec3();
     t.H.block(0, t.slice.start, 3, 3) = -Eigen::Matrix3d::Identity();
-    t.white_variance *= 1.0 - t.tuning.gps_bias_variance_fraction;
+    t.white_variance = t.white_variance.cwiseProduct(t.white_fraction);
   }
   /// First-order GM per NED axis at the level the fixes state.
   template <class T> static void process_noise(EffectView, T& t) {

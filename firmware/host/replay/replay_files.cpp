@@ -174,7 +174,9 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
                  {"magnetometer_learnt", opt.unit.adapt_mag_noise},
                  {"gnss_position_scale_learnt", opt.unit.adapt_position_scale},
                  {"gnss_position_scale_h", r.gnss_position_scale.x()},
-                 {"gnss_position_scale_v", r.gnss_position_scale.y()}};
+                 {"gnss_position_scale_v", r.gnss_position_scale.y()},
+                 {"gnss_white_scale_h", r.gnss_white_scale.x()},
+                 {"gnss_white_scale_v", r.gnss_white_scale.y()}};
   sj["gnss_only_rmse"] = {{"pos_h_m", num(r.gnss_rmse_pos_h_m())}, {"pos_v_m", num(r.gnss_rmse_pos_v_m())},
                           {"fixes", m.gnss_compared}, {"truth_is_gnss_input", r.truth_is_gnss_input()},
                           {"latency_s", r.configured_gps_latency_s + r.gnss_latency_shift_s},

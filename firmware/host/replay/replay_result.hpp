@@ -83,6 +83,7 @@ struct ReplayResult {
   SourceCounters source;
   double gnss_velocity_sigma_m_s = 0.0, mag_sigma_uT = 0.0;  // in use at the end (learnt or fixed)
   Eigen::Vector2d gnss_position_scale{1.0, 1.0};  // horizontal, vertical factor on unstated (no GST) sigmas
+  Eigen::Vector2d gnss_white_scale{1.0, 1.0};     // horizontal, vertical factor on the white part of stated ones
   std::string note;               // what the user must know ("" if nothing): truncated recording, dropped rows
 
   HealthStatus health() const;

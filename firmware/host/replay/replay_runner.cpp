@@ -210,6 +210,7 @@ void collect(const board::NavUnit& unit, ReplayResult& r) {
   r.gnss_velocity_sigma_m_s = nav.gnss_velocity_sigma_m_s();
   r.mag_sigma_uT = nav.mag_sigma_uT();
   r.gnss_position_scale = nav.gnss_position_scale();
+  r.gnss_white_scale = nav.gnss_white_scale();
 }
 
 }  // namespace

@@ -20,6 +20,7 @@ struct GnssPositionTerms {
   Eigen::Vector3d antenna_offset_n;      // antenna minus IMU, NED (from zero)
   Eigen::Vector3d measurement_offset_n;  // fix minus antenna, NED (from zero)
   Eigen::Vector3d white_variance;        // the fix's variance not carried by states
+  Eigen::Vector3d white_fraction;        // of the stated variance, when states carry the rest
   Slice slice;                           // the effect's states (inactive: size 0)
 };
 
@@ -36,7 +37,7 @@ Measurement gnss_position_measurement(const ErrorStateFilter& filter, const NavS
   m.H = MeasJacobian::Zero(3, L.dim);
   m.H.block(0, L.pos.start, 3, 3).setIdentity();
   GnssPositionTerms t{nav, C, filter.tuning(), m.H, L.att.start, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-                      z.sigma_ned_m.cwiseAbs2(), {}};
+                      z.sigma_ned_m.cwiseAbs2(), filter.gps_white_fraction_ned(), {}};
   for_each_effect([&]<class E>() {
     if constexpr (requires { E::gnss_position(filter.view(E::spec.effect), t); }) {
       t.slice = L.of(E::spec.effect);
