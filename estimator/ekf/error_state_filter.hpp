@@ -83,8 +83,8 @@ class ErrorStateFilter {
   /// whiter than assumed), the correlated part what is left (at least 1 %).
   void set_gps_bias_sigma(const Eigen::Vector3d& fix_sigma_ned_m, double dt_s,
                           const Eigen::Vector3d& white_scale = Eigen::Vector3d::Ones());
-  /// The share of a fix's stated variance that is white, per NED axis (may
-  /// exceed 1: a receiver that understates its error).
+  /// The share of a fix's stated variance that is white, per NED axis (the
+  /// navigator caps white_scale so that it is at most 1: all white).
   Eigen::Vector3d gps_white_fraction_ned() const { return gps_white_fraction_ned_; }
   /// The position was just set so that measurement `m` (a GNSS fix; its
   /// position columns the identity) fits exactly: its error is then the
