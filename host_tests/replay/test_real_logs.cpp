@@ -6,7 +6,7 @@
 //    must find out it is a car (it is never told) and dead-reckon the issue's
 //    ten 15-s outages (every 45 s from 60 s after the car first exceeds
 //    3 m/s) to at most 8 m RMS: half of what a public 21-state GNSS/INS
-//    reaches on the same outages (15.8 m).
+//    reaches on the same outages (15.8 m); at half the IMU rate the same.
 //  - uav_log171, a real quadcopter: the magnetometer fused from its first
 //    field sample (the first imu.csv row has none), no reset, no loss, and
 //    the horizontal error against the autopilot's own EKF (a peer fusing the
@@ -15,10 +15,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
+#include "host_tests/support/faults/text_lines.hpp"
 #include "host_tests/support/read_json.hpp"
 #include "host_tests/support/replay_helpers.hpp"
 #include "host_tests/support/run_process.hpp"
@@ -106,6 +109,54 @@ TEST(RealLogs, OnTheDriveDiagnoseFindsTheLateVelocityAndTheLateImuAndTheDriftFal
   std::printf("ten outages: %.3f -> %.3f m\n", sb["outage_max_drift_h_rms_m"].get<double>(),
               sa["outage_max_drift_h_rms_m"].get<double>());
   EXPECT_LT(sa["outage_max_drift_h_rms_m"].get<double>(), sb["outage_max_drift_h_rms_m"].get<double>());
+}
+
+/// imu.csv at half its rate, as a unit set to half the output data rate
+/// writes it: each pair of rows averaged (a boxcar filter, the sensor's own
+/// decimation) and stamped at the pair's midpoint; empty fields stay empty.
+void write_half_rate_imu(const std::string& from, const std::string& to) {
+  std::ifstream in(from);
+  std::ofstream out(to);
+  std::string header, a, b;
+  std::getline(in, header);
+  out << header << '\n';
+  while (std::getline(in, a) && std::getline(in, b)) {
+    const auto fa = faults::split_fields(a), fb = faults::split_fields(b);
+    ASSERT_EQ(fa.size(), fb.size()) << a << " / " << b;
+    for (std::size_t i = 0; i < fa.size(); ++i) {
+      if (i > 0) out << ',';
+      if (fa[i].empty() || fb[i].empty()) continue;
+      char mean[32];
+      std::snprintf(mean, sizeof mean, "%.8f", 0.5 * (std::stod(fa[i]) + std::stod(fb[i])));  // the inputs' digits
+      out << mean;
+    }
+    out << '\n';
+  }
+}
+
+// The tuning is in physical units, not per sample: the same car at 50 Hz
+// (its 100-Hz samples averaged in pairs) must dead-reckon the ten outages as
+// at 100 Hz. Measured 2.490 against 2.558 m; 15 % allows the first outages'
+// few-sample differences in when the filter aligns and learns. (Dropping every
+// other sample instead aliases the engine's vibration: 6.3 m, the sensor's
+// physics, not the filter's.)
+TEST(RealLogs, TheDriveAtHalfItsImuRateDriftsAsAtTheFullRate) {
+  SINU_REQUIRE_SHARED(drive, "data/real/drive_0708");
+  TempDir dir;
+  const std::string half = dir.file("half");
+  std::filesystem::create_directories(half);
+  for (const char* f : {"gps.nmea", "meta.json", "truth.csv"}) std::filesystem::copy(drive + "/" + f, half + "/" + f);
+  write_half_rate_imu(drive + "/imu.csv", half + "/imu.csv");
+  const std::string outages = drive_0708_outages();
+  const auto full = run_sinu({"replay", "--in", drive, "--outage", outages, "--quiet", "--out", dir.file("full")});
+  const auto halved = run_sinu({"replay", "--in", half, "--outage", outages, "--quiet", "--out", dir.file("halved")});
+  ASSERT_EQ(full.exit_code, 0) << full.err;
+  ASSERT_EQ(halved.exit_code, 0) << halved.err;
+  const auto sf = read_json(dir.file("full") + "/summary.json"), sh = read_json(dir.file("halved") + "/summary.json");
+  EXPECT_EQ(sh["health"]["status"], "ok");
+  const double d_full = sf["outage_max_drift_h_rms_m"].get<double>(), d_half = sh["outage_max_drift_h_rms_m"].get<double>();
+  std::printf("ten outages: 100 Hz %.3f m, 50 Hz %.3f m\n", d_full, d_half);
+  EXPECT_NEAR(d_half, d_full, 0.15 * d_full);
 }
 
 TEST(RealLogs, TheQuadcopterFusesItsMagnetometerAndStaysWithItsAutopilot) {
