@@ -15,7 +15,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -144,15 +143,11 @@ TEST(RealLogs, TheDriveAtHalfItsImuRateDriftsAsAtTheFullRate) {
   SINU_REQUIRE_SHARED(drive, "data/real/drive_0708");
   TempDir dir;
   const std::string half = dir.file("half");
-  std::filesystem::create_directories(half);
-  for (const char* f : {"gps.nmea", "meta.json", "truth.csv"}) std::filesystem::copy(drive + "/" + f, half + "/" + f);
-  write_half_rate_imu(drive + "/imu.csv", half + "/imu.csv");
+  copy_dataset_except(drive, half, "imu.csv");
+  ASSERT_NO_FATAL_FAILURE(write_half_rate_imu(drive + "/imu.csv", half + "/imu.csv"));
   const std::string outages = drive_0708_outages();
-  const auto full = run_sinu({"replay", "--in", drive, "--outage", outages, "--quiet", "--out", dir.file("full")});
-  const auto halved = run_sinu({"replay", "--in", half, "--outage", outages, "--quiet", "--out", dir.file("halved")});
-  ASSERT_EQ(full.exit_code, 0) << full.err;
-  ASSERT_EQ(halved.exit_code, 0) << halved.err;
-  const auto sf = read_json(dir.file("full") + "/summary.json"), sh = read_json(dir.file("halved") + "/summary.json");
+  const auto sf = replay_summary({"replay", "--in", drive, "--outage", outages, "--quiet", "--out", dir.file("full")});
+  const auto sh = replay_summary({"replay", "--in", half, "--outage", outages, "--quiet", "--out", dir.file("halved")});
   EXPECT_EQ(sh["health"]["status"], "ok");
   const double d_full = sf["outage_max_drift_h_rms_m"].get<double>(), d_half = sh["outage_max_drift_h_rms_m"].get<double>();
   std::printf("ten outages: 100 Hz %.3f m, 50 Hz %.3f m\n", d_full, d_half);

@@ -20,14 +20,20 @@
 
 namespace sinu::test {
 
+/// Creates `dst` and copies every file of dataset `src` into it but `skip`,
+/// which the caller writes edited.
+inline void copy_dataset_except(const std::string& src, const std::string& dst, const std::string& skip) {
+  std::filesystem::create_directories(dst);
+  for (const auto& e : std::filesystem::directory_iterator(src)) {
+    if (e.path().filename() != skip) std::filesystem::copy_file(e.path(), std::filesystem::path(dst) / e.path().filename());
+  }
+}
+
 /// A copy of dataset `src` at `dst` whose gps.nmea keeps the lines for which
 /// `keep(line)` is true (it may edit the line). Returns dst.
 inline std::string copy_dataset_editing_gps(const std::string& src, const std::string& dst,
                                             const std::function<bool(std::string&)>& keep) {
-  std::filesystem::create_directories(dst);
-  for (const auto& e : std::filesystem::directory_iterator(src)) {
-    if (e.path().filename() != "gps.nmea") std::filesystem::copy_file(e.path(), std::filesystem::path(dst) / e.path().filename());
-  }
+  copy_dataset_except(src, dst, "gps.nmea");
   std::ifstream in(src + "/gps.nmea");
   std::ofstream out(dst + "/gps.nmea");
   for (std::string line; std::getline(in, line);) {
@@ -40,10 +46,7 @@ inline std::string copy_dataset_editing_gps(const std::string& src, const std::s
 /// by their factor (empty fields stay empty). Returns dst.
 inline std::string with_scaled_columns(const std::string& src, const std::string& dst,
                                 const std::map<std::string, double>& factor) {
-  std::filesystem::create_directories(dst);
-  for (const auto& e : std::filesystem::directory_iterator(src)) {
-    if (e.path().filename() != "imu.csv") std::filesystem::copy_file(e.path(), std::filesystem::path(dst) / e.path().filename());
-  }
+  copy_dataset_except(src, dst, "imu.csv");
   std::ifstream in(src + "/imu.csv");
   std::ofstream out(dst + "/imu.csv");
   std::string line;
