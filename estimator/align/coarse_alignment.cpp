@@ -17,6 +17,7 @@ void CoarseAlignment::configure(const AlignmentConfig& cfg) {
   position_velocity_.configure(cfg.position_velocity);
   have_mag_ = false;
   tilt_since_s_ = -1.0;
+  course_check_until_s_ = -1.0;
   status_ = AlignStatus::WaitingForRest;
   q_now_ = q_still_ = Eigen::Quaterniond::Identity();
   carried_s_ = carried_still_s_ = 0.0;
@@ -27,6 +28,8 @@ void CoarseAlignment::configure(const AlignmentConfig& cfg) {
 }
 
 namespace {
+/// An in-motion tilt sigma good enough to align on (6 deg: the EKF, with this sigma, takes it from there).
+constexpr double kGoodTilt = 0.1;
 /// An attitude carried one sample by the gyros, less the rest's bias.
 Eigen::Quaterniond carried(const Eigen::Quaterniond& q, const ImuSample& s, const RestEstimate& rest, double dt) {
   return (q * quat_from_rotation_vector((s.angular_rate_b_rad_s - rest.mean_rate_b_rad_s) * dt)).normalized();
@@ -38,7 +41,10 @@ double model_year(const GnssObservation& z) {
 }  // namespace
 
 void CoarseAlignment::add_imu(const ImuSample& s, double dt) {
-  if (status_ == AlignStatus::Aligned) return;
+  if (status_ == AlignStatus::Aligned) {
+    if (checking_course()) in_motion_.add_imu(s, dt);
+    return;
+  }
   in_motion_.add_imu(s, dt);
   if (s.has_mag && s.mag_b_uT.allFinite()) {
     last_mag_b_uT_ = s.mag_b_uT;
@@ -190,7 +196,6 @@ bool CoarseAlignment::mag_heading(const Eigen::Quaterniond& q_nb, double tilt_si
 bool CoarseAlignment::align_in_motion(const GnssObservation& z, double t_now, AlignmentResult& out) {
   InMotionSolution s;
   if (!in_motion_.add_gnss(z, t_now, s)) return false;
-  constexpr double kGoodTilt = 0.1;  // 6 deg: the EKF, with this sigma, takes it from there
   if (s.att_sigma_rad.head<2>().maxCoeff() > kGoodTilt) return false;
   if (tilt_since_s_ < 0.0) tilt_since_s_ = t_now;
   const double yaw_now = euler_from_quat(s.q_nb).z();
@@ -231,7 +236,7 @@ void CoarseAlignment::finish_in_motion(const GnssObservation& z, double t_now, c
   // Horizontal velocity from the fix; vertical unknown (NMEA has none): a climb's few m/s.
   out.vel_sigma_m_s = {z.sigma_vel_m_s, z.sigma_vel_m_s, cfg_.climb_sigma_m_s};
   out.temp_ref_degC = last_temp_degC_;
-  status_ = AlignStatus::Aligned;
+  aligned(out, t_now);
 }
 
 double CoarseAlignment::rest_tilt_sigma() const {
@@ -270,7 +275,29 @@ void CoarseAlignment::finish(const GnssObservation& z, double t_now, double turn
   out.nav.t_s = t_now;
   out.temp_ref_degC = r.temp_degC;
   record_field_check(z, out);
+  aligned(out, t_now);
+}
+
+void CoarseAlignment::aligned(const AlignmentResult& out, double t_now) {
   status_ = AlignStatus::Aligned;
+  course_check_until_s_ = out.heading_source == HeadingSource::GnssCourse ? t_now + cfg_.course_check_s : -1.0;
+}
+
+bool CoarseAlignment::check_course(const GnssObservation& fix, double t_now, double& yaw, double& sigma) {
+  if (!checking_course() || !fix.has_position) return false;
+  if (t_now > course_check_until_s_) {
+    end_course_check();
+    return false;
+  }
+  GnssObservation z = fix;
+  position_velocity_.fill(z);
+  InMotionSolution s;
+  if (!in_motion_.add_gnss(z, t_now, s)) return false;
+  if (s.att_sigma_rad.head<2>().maxCoeff() > kGoodTilt || s.att_sigma_rad.z() > cfg_.course_check_sigma_rad)
+    return false;
+  yaw = euler_from_quat(s.q_nb).z();
+  sigma = s.att_sigma_rad.z();
+  return true;
 }
 
 }  // namespace sinu::est

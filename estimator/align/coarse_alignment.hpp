@@ -28,6 +28,15 @@
 // steady acceleration (rest_levelling.hpp): the levelling goes back to the
 // rest of the last still fix, its attitude carried by the gyros since, or,
 // with no still fix yet, to none (the in-motion alignment takes over).
+// The course is the heading only if the unit's x axis points along the
+// track: a unit mounted turned, a multirotor flying sideways or backwards
+// gives a course any angle off, stated with a sigma of a few degrees. So
+// after a course alignment the in-motion alignment keeps running (up to
+// course_check_s) until its own yaw is informative (course_check_sigma_rad,
+// ~5 s of driving), and check_course hands each such yaw to the navigator,
+// which ends the check when the two agree and turns the solution when they
+// disagree (the real drive turned 90 deg on its mount: 37.7 -> 11.6 m over
+// ten outages; docs/experiments.md).
 // Status: WaitingForRest (no tilt yet), Levelled (tilt known, waiting for a
 // heading), Aligned.
 #include <cmath>
@@ -66,6 +75,10 @@ struct AlignmentConfig {
   double geomag_max_dip_rad = 0.087;       // 5 deg between the measured and the model's inclination
   double climb_sigma_m_s = 3.0;            // vertical velocity aligned in motion: NMEA has none
   double rest_contradicted_m_s = 1.0;      // a fix this fast: not at rest (a receiver at rest reads < 0.3)
+  // After a heading from the GNSS course: how long the in-motion alignment keeps running to check it, and
+  // the yaw sigma at which its yaw is sure enough to (20 deg: tells a course 90 deg off the heading).
+  double course_check_s = 120.0;
+  double course_check_sigma_rad = 0.35;
 };
 
 /// Where the first heading came from (AlignmentResult, the replay's summary).
@@ -101,6 +114,9 @@ struct AlignmentResult {
   double gyro_bias_sigma_rad_s = 0.0;
   double temp_ref_degC = 0.0;
   HeadingSource heading_source = HeadingSource::GnssCourse;
+  // A course heading the in-motion alignment contradicted later (check_course): the turn the
+  // navigator gave the solution [rad] and when (NaN: not turned, or no course heading).
+  double course_turn_rad = NAN, course_turn_t_s = NAN;
   double declination_rad = NAN;   // the declination used (magnetometer headings with one)
   double declination_drift_rad = 0.0;  // without a date: its change to either end of the model's span
   // The measured field against the model's, when the model was consulted:
@@ -121,6 +137,12 @@ class CoarseAlignment {
   /// filled) when it completes the alignment.
   bool add_gnss(const GnssObservation& z, double t_now_s, AlignmentResult& out);
   AlignStatus status() const { return status_; }
+  /// After a course alignment, with each GNSS epoch: true when the in-motion
+  /// alignment's yaw [rad] at t_now_s is informative (`yaw_rad`, `sigma_rad`),
+  /// until end_course_check() or course_check_s after the alignment.
+  bool check_course(const GnssObservation& z, double t_now_s, double& yaw_rad, double& sigma_rad);
+  bool checking_course() const { return course_check_until_s_ > 0.0; }
+  void end_course_check() { course_check_until_s_ = -1.0; }
 
  private:
   void finish(const GnssObservation& z, double t_now_s, double turn_rad, double yaw_sigma_rad, AlignmentResult& out);
@@ -159,6 +181,9 @@ class CoarseAlignment {
   bool have_mag_ = false;
   double last_temp_degC_ = 0.0;
   double tilt_since_s_ = -1.0;  // first in-motion solution with a good tilt (-1: none yet)
+  double course_check_until_s_ = -1.0;  // aligned on the course: the check runs until then (-1: no check)
+  /// Aligned: the check starts when the heading is the course.
+  void aligned(const AlignmentResult& out, double t_now_s);
   Eigen::Quaterniond q_now_ = Eigen::Quaterniond::Identity();  // rest attitude (yaw 0) carried by the gyros
   double carried_s_ = 0.0;                                      // since the end of the rest
   // The rest as the last still fix saw it, and its attitude carried since.

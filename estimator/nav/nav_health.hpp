@@ -40,15 +40,16 @@ enum : std::uint32_t {
   kNonholonomicFused = 1u << 21,
   kVehicleChanged = 1u << 22,  // vehicle auto: the ground-vehicle constraints were switched on or off
   kGyroBiasReleased = 1u << 23,  // the gyro bias about the vertical widened (the magnetometer's misfit on one side, a yaw reset)
+  kCourseTurned = 1u << 24,      // aligned on the GNSS course, turned to the in-motion alignment's yaw (coarse_alignment.hpp)
 };
 }  // namespace nav_flag
 
 /// The flags' names, bit by bit (nav.csv documents its `flags` column with them).
-inline constexpr std::array<const char*, 24> kNavFlagNames = {
+inline constexpr std::array<const char*, 25> kNavFlagNames = {
     "aligned", "gnss_timeout", "mag_timeout", "lost", "gnss_suspect", "clipping", "ground_vehicle", "",
     "gnss_pos_fused", "gnss_pos_rejected", "gnss_vel_fused", "gnss_vel_rejected", "mag_fused", "mag_rejected",
     "position_reset", "velocity_reset", "yaw_reset", "imu_gap", "imu_dropped", "aligned_now", "still",
-    "nonholonomic_fused", "vehicle_changed", "gyro_bias_released"};
+    "nonholonomic_fused", "vehicle_changed", "gyro_bias_released", "course_turned"};
 
 struct NavCounters {
   std::array<std::uint64_t, kAidingSourceCount> accepted{}, rejected{};

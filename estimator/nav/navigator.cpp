@@ -176,6 +176,7 @@ void Navigator::process(const ImuSample& s) {
     return;
   }
 
+  alignment_.add_imu(s, dt);  // after a course alignment, its check (check_course)
   const bool gap = dt > cfg_.gap_periods * period_s_;
   if (gap) last_gap_t_s_ = s.t_s;
   const BodyRates r0 = filter_.compensate(prev_);
@@ -292,6 +293,7 @@ void Navigator::align(const ImuSample& s, double dt) {
     heading_.restart();
     last_gnss_pos_t_s_ = s.t_s;
     events_ |= nav_flag::kAlignedNow;
+    if (alignment_.checking_course()) filter_at_alignment_ = filter_;
     return;
   }
 }
@@ -344,6 +346,7 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
       if (z.has_position) recovery_.on_unusable(t_now);
       continue;
     }
+    check_course(z, t_now);
     if (z.has_position) {
       if (!z.sigma_is_guess) {
         last_stated_sigma_ned_m_ = z.sigma_ned_m;
@@ -504,6 +507,35 @@ void Navigator::check_heading(double t_meas) {
   if (!heading_.push(t_meas, misfit, sigma)) return;
   predict_.flush(filter_);
   release_gyro_bias_about_vertical();
+}
+
+void Navigator::check_course(const GnssObservation& z, double t_now) {
+  double yaw = 0.0, sigma = 0.0;
+  if (!alignment_.check_course(z, t_now, yaw, sigma)) return;
+  const Eigen::Index i = filter_.layout().att.start + 2;
+  predict_.flush(filter_);
+  const double turn = wrap_pi(yaw - euler_from_quat(nav_.q_nb).z());
+  // The in-motion yaw against the filter's, which has had the GNSS velocity
+  // since: within two combined sigmas the course was right; beyond three it
+  // was not; between, the next, surer, in-motion yaw decides. (A gentle start
+  // pulls the filter's yaw part of the way with a sigma it does not have: 59
+  // deg off under a 4-deg sigma, the in-motion yaw at 20 deg.)
+  const double combined = std::hypot(sigma, std::sqrt(filter_.P()(i, i)));
+  if (std::abs(turn) <= 2.0 * combined) alignment_.end_course_check();
+  if (std::abs(turn) <= 3.0 * combined) return;
+  alignment_.end_course_check();
+  // Seconds under a heading that many degrees off taught the sensor errors
+  // the misfit (a 180-deg mount: 0.4 m/s^2 of accelerometer bias, 0.16
+  // deg/s of gyro bias; the heading then ran 15 deg away): the filter
+  // restarts from its alignment, at the position and velocity it has now,
+  // and the field states (if any) restart with the next field sample.
+  filter_ = filter_at_alignment_;
+  mag_started_ = false;
+  filter_.reset_yaw(nav_, turn, sigma);
+  alignment_result_.course_turn_rad = turn;
+  alignment_result_.course_turn_t_s = t_now;
+  events_ |= nav_flag::kCourseTurned;
+  heading_.restart();
 }
 
 void Navigator::release_gyro_bias_about_vertical() {

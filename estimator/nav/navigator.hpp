@@ -258,6 +258,9 @@ class Navigator {
   /// The last field update's misfit to the heading check; widens the gyro bias
   /// about the vertical when the misfit is the filter's.
   void check_heading(double t_meas);
+  /// After a course alignment: turns the solution to the in-motion alignment's
+  /// yaw when that is informative and contradicts it (coarse_alignment.hpp).
+  void check_course(const GnssObservation& z, double t_now);
   /// Widens the gyro bias about the vertical by heading_bias_widen_rad_s (P at now).
   void release_gyro_bias_about_vertical();
   /// Sets the position (and its covariance) from fix z, taken at dt_back before now.
@@ -283,6 +286,10 @@ class Navigator {
   SensorScaleCheck scale_check_;
   AlignmentResult alignment_result_;
   ErrorStateFilter filter_;
+  // The filter as the alignment seeded it, kept while the course check runs:
+  // where the course proves wrong, what was learnt under it is dropped and
+  // the filter restarts from here (check_course).
+  ErrorStateFilter filter_at_alignment_;
   GnssRecovery recovery_;
   VerticalCheck vertical_;
   HeadingCheck heading_;

@@ -105,5 +105,30 @@ TEST(NavigatorAlloc, FaultPathsAllocateNothing) {
   EXPECT_GE(c.mag_reanchors, 1u);
 }
 
+// Without a magnetometer, the unit mounted turned 90 deg about z: aligned on
+// the GNSS course, then the in-motion alignment's check turns the solution.
+TEST(NavigatorAlloc, TheCourseCheckAllocatesNothing) {
+  FlightProfile gentle;  // a car's start: 0.4 m/s^2, which leaves the EKF's heading where the course put it
+  gentle.cruise_m_s = 8.0;
+  const auto truth = AnalyticFlight(gentle).sample(40.0, 200.0);
+  const auto gnss = AnalyticFlight::gnss(truth, 8, 0.05, Eigen::Vector3d::Zero(), 0.5, 0.1);
+  std::vector<est::ImuSample> imu;
+  const auto turned = [](const Eigen::Vector3d& v) { return Eigen::Vector3d(v.y(), -v.x(), v.z()); };
+  for (const auto& s : truth) {
+    imu.push_back(s.imu);
+    imu.back().specific_force_b_m_s2 = turned(s.imu.specific_force_b_m_s2);
+    imu.back().angular_rate_b_rad_s = turned(s.imu.angular_rate_b_rad_s);
+    imu.back().has_mag = false;
+  }
+  est::NavigatorConfig cfg;
+  cfg.noise = est::SensorNoise::defaults(est::NoiseModelKind::AutoRegressive);
+  AllocRun run;
+  run_counting(cfg, imu, gnss, run);
+  EXPECT_EQ(run.allocations, 0u);
+  ASSERT_TRUE(run.nav->aligned());
+  EXPECT_EQ(run.nav->alignment_result().heading_source, est::HeadingSource::GnssCourse);
+  EXPECT_TRUE(std::isfinite(run.nav->alignment_result().course_turn_rad)) << "the check's path was not taken";
+}
+
 }  // namespace
 }  // namespace sinu::test

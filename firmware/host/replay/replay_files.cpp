@@ -103,7 +103,9 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
                        {"heading_from", est::heading_source_name(a.heading_source)},
                        {"declination_deg", num(a.declination_rad * kDeg)},
                        {"field_over_model", num(a.field_ratio)},
-                       {"dip_minus_model_deg", num(a.dip_difference_rad * kDeg)}};
+                       {"dip_minus_model_deg", num(a.dip_difference_rad * kDeg)},
+                       {"course_turned_deg", num(a.course_turn_rad * kDeg)},
+                       {"course_turned_at_s", num(a.course_turn_t_s)}};
   }
   // The units check (estimator/nav/sensor_scale_check.hpp): null where nothing was judged.
   sj["sensor_units"] = {{"specific_force_over_gravity", num(r.scale.specific_force_over_gravity)},

@@ -69,6 +69,11 @@ class ReplayObserver final : public est::NavObserver {
                    (resets & f::kPositionReset) ? "position " : "", (resets & f::kVelocityReset) ? "velocity " : "",
                    (resets & f::kYawReset) ? "yaw" : "");
     }
+    if ((o.flags & f::kCourseTurned) && warnings_ < kMaxWarnings) {
+      ++warnings_;
+      std::fprintf(stderr, "sinu replay: warning: t=%.3f s: heading turned: the in-motion alignment contradicts the GNSS "
+                   "course it was aligned on (a unit mounted turned, or moving sideways)\n", o.nav.t_s);
+    }
     if (lost && !was_lost_ && warnings_ < kMaxWarnings) {
       ++warnings_;
       std::fprintf(stderr, "sinu replay: warning: t=%.3f s: solution LOST (GNSS fixes arriving, none fused)\n",
