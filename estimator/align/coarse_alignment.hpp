@@ -35,7 +35,7 @@
 // course_check_s) until its own yaw is informative (course_check_sigma_rad,
 // ~5 s of driving), and check_course hands each such yaw to the navigator,
 // which ends the check when the two agree and turns the solution when they
-// disagree (the real drive turned 90 deg on its mount: 37.7 -> 11.6 m over
+// disagree (the real drive turned 90 deg on its mount: 37.7 -> 3.4 m over
 // ten outages; docs/experiments.md).
 // Status: WaitingForRest (no tilt yet), Levelled (tilt known, waiting for a
 // heading), Aligned.
@@ -75,10 +75,12 @@ struct AlignmentConfig {
   double geomag_max_dip_rad = 0.087;       // 5 deg between the measured and the model's inclination
   double climb_sigma_m_s = 3.0;            // vertical velocity aligned in motion: NMEA has none
   double rest_contradicted_m_s = 1.0;      // a fix this fast: not at rest (a receiver at rest reads < 0.3)
-  // After a heading from the GNSS course: how long the in-motion alignment keeps running to check it, and
-  // the yaw sigma at which its yaw is sure enough to (20 deg: tells a course 90 deg off the heading).
+  // After a heading from the GNSS course: how long the in-motion alignment keeps running to check it, the
+  // yaw sigma at which its yaw is sure enough to (20 deg: tells a course 90 deg off the heading), and how
+  // long it must contradict the filter's (the EKF may still be turning to it on its own).
   double course_check_s = 120.0;
   double course_check_sigma_rad = 0.35;
+  double course_check_persist_s = 2.0;
 };
 
 /// Where the first heading came from (AlignmentResult, the replay's summary).

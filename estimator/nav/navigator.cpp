@@ -63,7 +63,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   white_h_.configure(white, 1.0);
   white_v_.configure(white, 1.0);
   last_pos_scale_t_s_ = last_stated_t_s_ = kNever;
-  course_t_s_ = heading_yaw_t_s_ = kNever;
+  course_t_s_ = heading_yaw_t_s_ = course_contradicted_since_s_ = kNever;
   course_rate_rad_s_ = yaw_rate_rad_s_ = 0.0;
   mag_reject_since_s_ = -1.0;
   have_prev_ = have_raw_ = mag_started_ = in_timeout_ = false;
@@ -346,7 +346,7 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
       if (z.has_position) recovery_.on_unusable(t_now);
       continue;
     }
-    check_course(z, t_now);
+    check_course(z, t_now, dt_back);
     if (z.has_position) {
       if (!z.sigma_is_guess) {
         last_stated_sigma_ned_m_ = z.sigma_ned_m;
@@ -509,7 +509,7 @@ void Navigator::check_heading(double t_meas) {
   release_gyro_bias_about_vertical();
 }
 
-void Navigator::check_course(const GnssObservation& z, double t_now) {
+void Navigator::check_course(const GnssObservation& z, double t_now, double dt_back) {
   double yaw = 0.0, sigma = 0.0;
   if (!alignment_.check_course(z, t_now, yaw, sigma)) return;
   const Eigen::Index i = filter_.layout().att.start + 2;
@@ -520,22 +520,40 @@ void Navigator::check_course(const GnssObservation& z, double t_now) {
   // was not; between, the next, surer, in-motion yaw decides. (A gentle start
   // pulls the filter's yaw part of the way with a sigma it does not have: 59
   // deg off under a 4-deg sigma, the in-motion yaw at 20 deg.)
+  // The contradiction must hold for course_check_persist_s: an in-motion yaw
+  // is sure of itself a little early on a real multirotor's vibration (uav_log171
+  // without its magnetometer: 35 deg off under a 14-deg sigma, while the EKF,
+  // 17 deg off, was turning to the truth on its own in the first dash).
   const double combined = std::hypot(sigma, std::sqrt(filter_.P()(i, i)));
   if (std::abs(turn) <= 2.0 * combined) alignment_.end_course_check();
-  if (std::abs(turn) <= 3.0 * combined) return;
+  if (std::abs(turn) <= 3.0 * combined) {
+    course_contradicted_since_s_ = kNever;
+    return;
+  }
+  if (course_contradicted_since_s_ == kNever) course_contradicted_since_s_ = t_now;
+  if (t_now - course_contradicted_since_s_ < cfg_.alignment.course_check_persist_s) return;
   alignment_.end_course_check();
   // Seconds under a heading that many degrees off taught the sensor errors
   // the misfit (a 180-deg mount: 0.4 m/s^2 of accelerometer bias, 0.16
   // deg/s of gyro bias; the heading then ran 15 deg away): the filter
   // restarts from its alignment, at the position and velocity it has now,
   // and the field states (if any) restart with the next field sample.
+  const StateLayout& L = filter_.layout();
+  const double sigma_vd = std::sqrt(filter_.P()(L.vel.start + 2, L.vel.start + 2));
   filter_ = filter_at_alignment_;
   mag_started_ = false;
   filter_.reset_yaw(nav_, turn, sigma);
+  // And on the fix, as at the alignment: the solution drifted under the wrong heading.
+  if (z.has_velocity) {
+    nav_.v_n_m_s.head<2>() = z.v_ne_m_s;
+    filter_.reset_block(L.vel, Eigen::Vector3d(z.sigma_vel_m_s, z.sigma_vel_m_s, sigma_vd));
+  }
+  if (z.has_position && z.has_height) seed_position_on_fix(z, dt_back);
   alignment_result_.course_turn_rad = turn;
   alignment_result_.course_turn_t_s = t_now;
   events_ |= nav_flag::kCourseTurned;
   heading_.restart();
+  vehicle_.restart();  // its evidence: the body velocity under the wrong heading
 }
 
 void Navigator::release_gyro_bias_about_vertical() {
@@ -680,7 +698,7 @@ void Navigator::fuse_vehicle_constraints(const ImuSample& s, const BodyRates& no
   last_nhc_t_s_ = s.t_s;
   const bool ok = fuse(AidingSource::Nonholonomic,
                        nonholonomic_measurement(filter_, nav_, now.angular_rate_b_rad_s, cfg_.nonholonomic,
-                                                cfg_.gate_sigma),
+                                                cfg_.gate_sigma, nhc_lateral_axis()),
                        s.t_s);
   if (cfg_.vehicle == VehicleKind::Auto) {
     vehicle_.on_constraint(s.t_s, ok);

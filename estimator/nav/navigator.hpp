@@ -216,6 +216,8 @@ class Navigator {
     return cfg_.vehicle == VehicleKind::Ground ||
            (cfg_.vehicle == VehicleKind::Auto && vehicle_.guess() == VehicleGuess::Ground);
   }
+  /// The body axis across the vehicle for the constraint: y, or x where the detector found the unit sideways.
+  Eigen::Index nhc_lateral_axis() const { return cfg_.vehicle == VehicleKind::Auto ? vehicle_.lateral_axis() : 1; }
   const VehicleDetector& vehicle_detector() const { return vehicle_; }
   /// How the alignment went (valid once aligned): the heading's source, the declination used.
   const AlignmentResult& alignment_result() const { return alignment_result_; }
@@ -260,7 +262,7 @@ class Navigator {
   void check_heading(double t_meas);
   /// After a course alignment: turns the solution to the in-motion alignment's
   /// yaw when that is informative and contradicts it (coarse_alignment.hpp).
-  void check_course(const GnssObservation& z, double t_now);
+  void check_course(const GnssObservation& z, double t_now, double dt_back);
   /// Widens the gyro bias about the vertical by heading_bias_widen_rad_s (P at now).
   void release_gyro_bias_about_vertical();
   /// Sets the position (and its covariance) from fix z, taken at dt_back before now.
@@ -290,6 +292,7 @@ class Navigator {
   // where the course proves wrong, what was learnt under it is dropped and
   // the filter restarts from here (check_course).
   ErrorStateFilter filter_at_alignment_;
+  double course_contradicted_since_s_ = -1e300;  // the course check's contradiction began then (-1e300: none)
   GnssRecovery recovery_;
   VerticalCheck vertical_;
   HeadingCheck heading_;

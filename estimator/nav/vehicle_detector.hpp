@@ -14,6 +14,12 @@
 // rejected more often than not over `revert_window_s` (the guess was wrong:
 // an aircraft's take-off run, then flight), it goes back to air for good.
 //
+// A unit mounted sideways (its x axis across the vehicle: the contract says
+// x forward, a bracket may not) moves along its body x hardly at all: its
+// body x is then the lateral axis, and the constraint is applied so
+// (lateral_axis). Only the two body axes: a unit at 45 deg on its mount
+// stays undetected (an aircraft to the filter, no constraint).
+//
 // Measured (the solution without the constraint): the real car drive_0708,
 // body z 0.05-0.10 m/s RMS per minute, lateral 0.07-0.43 (heading not yet
 // held by the constraint); the simulator's UAV 1.8 / 0.5 m/s; the real
@@ -31,6 +37,7 @@ struct VehicleDetectorConfig {
   double min_turn_rad = 1.57;          // heading changes summed (with the same memory) while moving
   double max_vertical_rms_m_s = 0.25;  // body z
   double max_lateral_rms_m_s = 0.5;    // body y: looser, the heading is the least known angle
+  double sideways_lateral_rms_m_s = 1.0;  // a unit mounted sideways, about its motion's axis (vehicle_detector.cpp)
   double revert_window_s = 10.0;
 };
 
@@ -41,8 +48,13 @@ class VehicleDetector {
  public:
   void configure(const VehicleDetectorConfig& cfg) {
     cfg_ = cfg;
+    restart();
+  }
+  /// Forgets the evidence: the solution it came from was wrong (a heading turned by the course check).
+  void restart() {
     guess_ = VehicleGuess::Undecided;
-    moving_s_ = weight_s_ = turn_rad_ = sum_lat2_ = sum_vert2_ = decided_at_s_ = 0.0;
+    moving_s_ = weight_s_ = turn_rad_ = sum_lat2_ = sum_fwd2_ = sum_vert2_ = sum_cross_ = decided_at_s_ = 0.0;
+    lateral_axis_ = 1;
     have_yaw_ = false;
     nhc_tried_ = nhc_rejected_ = 0;
     window_start_s_ = 0.0;
@@ -54,8 +66,11 @@ class VehicleDetector {
   void on_constraint(double t_s, bool accepted);
 
   VehicleGuess guess() const { return guess_; }
+  /// The body axis across the vehicle: 1 (y, the contract's x forward) or 0 (x: mounted sideways).
+  int lateral_axis() const { return lateral_axis_; }
   double decided_at_s() const { return decided_at_s_; }
-  /// The evidence so far (or at the decision): body-frame RMS over the memory [m/s], time moving [s].
+  /// The evidence so far (or at the decision): body-frame RMS over the memory [m/s] (lateral: along
+  /// lateral_axis()), time moving [s].
   double lateral_rms_m_s() const;
   double vertical_rms_m_s() const;
   double moving_s() const { return moving_s_; }
@@ -63,7 +78,9 @@ class VehicleDetector {
  private:
   VehicleDetectorConfig cfg_;
   VehicleGuess guess_ = VehicleGuess::Undecided;
-  double moving_s_ = 0.0, weight_s_ = 0.0, turn_rad_ = 0.0, sum_lat2_ = 0.0, sum_vert2_ = 0.0;
+  double moving_s_ = 0.0, weight_s_ = 0.0, turn_rad_ = 0.0, sum_lat2_ = 0.0, sum_fwd2_ = 0.0, sum_vert2_ = 0.0;
+  double sum_cross_ = 0.0;  // body x times y
+  int lateral_axis_ = 1;
   double last_yaw_rad_ = 0.0, decided_at_s_ = 0.0, window_start_s_ = 0.0;
   bool have_yaw_ = false;
   int nhc_tried_ = 0, nhc_rejected_ = 0;

@@ -79,9 +79,10 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
   }
   const replay::VehicleOutcome& v = r.vehicle;
   if (v.configured == est::VehicleKind::Auto && v.guess != est::VehicleGuess::Undecided) {
-    std::printf("  vehicle: moves like a ground vehicle from t=%.1f s (body-frame velocity while moving: lateral %.2f, "
+    std::printf("  vehicle: moves like a ground vehicle from t=%.1f s (body-frame velocity while moving: lateral%s %.2f, "
                 "vertical %.2f m/s RMS): non-holonomic constraint %s\n",
-                v.detected_at_s, v.lateral_rms_m_s, v.vertical_rms_m_s,
+                v.detected_at_s, v.mounted_sideways ? " (body x: the unit is mounted sideways)" : "", v.lateral_rms_m_s,
+                v.vertical_rms_m_s,
                 v.guess == est::VehicleGuess::Ground ? "on (--vehicle air keeps it off)"
                                                      : "on, then off again: the constraint did not hold");
   }

@@ -57,6 +57,42 @@ TEST(VehicleDetector, AircraftAreNeverTakenForGroundVehicles) {
   EXPECT_EQ(run(600.0, 25.0, 2.0, 0.2, at), est::VehicleGuess::Undecided);
   // A multirotor pitched 10 deg into 8 m/s of forward flight.
   EXPECT_EQ(run(600.0, 8.0, 0.0, 8.0 * std::tan(10.0 * kDeg), at), est::VehicleGuess::Undecided);
+  // Flying sideways, rolled 10 deg into it: the sideways mounting's test sees its body z too.
+  EXPECT_EQ(run(600.0, 0.2, 8.0, 8.0 * std::tan(10.0 * kDeg), at), est::VehicleGuess::Undecided);
+}
+
+// A unit mounted sideways (its x axis to the car's right) on a car circling
+// at 10 m/s, whose solution's heading is `heading_error_deg` off (after the
+// course check: 5-20 deg) and 0.1 m/s vertical: its body velocity lies along
+// body y, turned by the heading error.
+est::VehicleDetector sideways_car(double heading_error_deg) {
+  est::VehicleDetector d;
+  d.configure({});
+  for (double t = 0.0; t < 120.0; t += kDt) {
+    const double track = 2.0 * std::numbers::pi * t / 60.0;
+    est::NavState nav;
+    nav.t_s = t;
+    nav.q_nb = est::quat_from_euler(0.0, 0.0, track - std::numbers::pi / 2.0 + heading_error_deg * kDeg);
+    nav.v_n_m_s = Eigen::Vector3d(10.0 * std::cos(track), 10.0 * std::sin(track), 0.1);
+    d.add(nav, kDt, true);
+  }
+  return d;
+}
+
+TEST(VehicleDetector, AUnitMountedSidewaysIsFoundWithItsLateralAxis) {
+  for (const double error_deg : {0.0, 7.0, -15.0}) {
+    const est::VehicleDetector d = sideways_car(error_deg);
+    EXPECT_EQ(d.guess(), est::VehicleGuess::Ground) << error_deg;
+    EXPECT_EQ(d.lateral_axis(), 0) << "the body x is across the car";
+    // Across the motion's own axis: the constant heading error turns it, it adds nothing across.
+    EXPECT_LT(d.lateral_rms_m_s(), 0.05) << error_deg;
+  }
+  // As the contract mounts it, the lateral axis stays body y.
+  est::VehicleDetector d;
+  d.configure({});
+  for (double t = 0.0; t < 120.0; t += kDt) d.add(state_at(t, 10.0, 0.1, 0.1, 60.0), kDt, true);
+  EXPECT_EQ(d.guess(), est::VehicleGuess::Ground);
+  EXPECT_EQ(d.lateral_axis(), 1);
 }
 
 TEST(VehicleDetector, StraightOrSlowOrUnaidedMotionIsNoEvidence) {

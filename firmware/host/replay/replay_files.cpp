@@ -86,7 +86,8 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
                    {"detected", detected},
                    {"detected_at_s", v.guess != est::VehicleGuess::Undecided ? json(v.detected_at_s) : json(nullptr)},
                    {"evidence", {{"moving_s", v.moving_s}, {"body_lateral_rms_m_s", v.lateral_rms_m_s},
-                                 {"body_vertical_rms_m_s", v.vertical_rms_m_s}}}};
+                                 {"body_vertical_rms_m_s", v.vertical_rms_m_s}}},
+                   {"lateral_axis", v.mounted_sideways ? "x (unit mounted sideways)" : "y"}};
   json eff = json::array();
   for (const EffectEstimate& e : r.effects) {
     eff.push_back({{"name", est::kEffectNames[static_cast<std::size_t>(e.effect)]}, {"estimate", e.estimate}, {"sigma", e.sigma}});

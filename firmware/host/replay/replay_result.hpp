@@ -55,6 +55,7 @@ struct VehicleOutcome {
   est::VehicleGuess guess = est::VehicleGuess::Undecided;
   double detected_at_s = 0.0;       // valid when guess != Undecided
   double lateral_rms_m_s = 0.0, vertical_rms_m_s = 0.0, moving_s = 0.0;  // the detector's evidence
+  bool mounted_sideways = false;    // the lateral axis the detector found is the body's x
 };
 
 enum class HealthStatus { Ok, Reset, LostAndRecovered, Lost, NotAligned };

@@ -211,7 +211,7 @@ void collect(const board::NavUnit& unit, ReplayResult& r) {
   r.counters = nav.counters();
   const est::VehicleDetector& vd = nav.vehicle_detector();
   r.vehicle = {nav.config().vehicle, nav.ground_vehicle(), vd.guess(), vd.decided_at_s(), vd.lateral_rms_m_s(),
-               vd.vertical_rms_m_s(), vd.moving_s()};
+               vd.vertical_rms_m_s(), vd.moving_s(), vd.lateral_axis() == 0};
   r.gnss_velocity_sigma_m_s = nav.gnss_velocity_sigma_m_s();
   r.mag_sigma_uT = nav.mag_sigma_uT();
   r.gnss_position_scale = nav.gnss_position_scale();

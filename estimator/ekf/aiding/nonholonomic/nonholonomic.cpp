@@ -7,17 +7,21 @@
 namespace sinu::est {
 
 Measurement nonholonomic_measurement(const ErrorStateFilter& filter, const NavState& nav,
-                                     const Eigen::Vector3d& w_b, const NonholonomicConfig& cfg, double gate_sigma) {
+                                     const Eigen::Vector3d& w_b, const NonholonomicConfig& cfg, double gate_sigma,
+                                     Eigen::Index lateral_axis) {
   const StateLayout& L = filter.layout();
   const Eigen::Matrix3d C_bn = nav.C_nb().transpose();
   const Eigen::Vector3d v_b = C_bn * nav.v_n_m_s;
   const Eigen::Matrix3d H_att = -C_bn * skew(nav.v_n_m_s);
   Measurement m;
   m.gate_sigma = gate_sigma;
-  m.innovation = v_b.tail<2>();
+  m.innovation = Eigen::Vector2d(v_b(lateral_axis), v_b.z());
   m.H = MeasJacobian::Zero(2, L.dim);
-  m.H.block(0, L.vel.start, 2, 3) = C_bn.bottomRows<2>();
-  m.H.block(0, L.att.start, 2, 3) = H_att.bottomRows<2>();
+  const Eigen::Index rows[2] = {lateral_axis, 2};
+  for (Eigen::Index r = 0; r < 2; ++r) {
+    m.H.block(r, L.vel.start, 1, 3) = C_bn.row(rows[r]);
+    m.H.block(r, L.att.start, 1, 3) = H_att.row(rows[r]);
+  }
   const double turn = cfg.sigma_per_yaw_rate_m * std::abs(w_b.z());
   const double lat = std::hypot(cfg.lateral_sigma_m_s, turn), vert = cfg.vertical_sigma_m_s;
   m.R = MeasMat::Zero(2, 2);

@@ -1,8 +1,9 @@
 #pragma once
 // Non-holonomic constraint for a ground vehicle: its wheels neither slide
 // sideways nor leave the road, so the velocity in the body frame has no
-// lateral (y) and no vertical (z) component. Measurement z = 0 for
-//   v_b = C_bn v_n, rows y and z.
+// lateral (y; x for a unit mounted sideways: `lateral_axis`) and no vertical
+// (z) component. Measurement z = 0 for
+//   v_b = C_bn v_n, rows lateral_axis and z.
 // With C_nb_hat = (I - [phi x]) C_nb and dv = v_hat - v:
 //   v_b_hat = C_bn (v + dv) + C_bn [phi x] v = v_b + C_bn dv - C_bn [v x] phi, so
 //   H_vel = C_bn (rows y, z),  H_att = -C_bn [v x] (rows y, z).
@@ -22,6 +23,6 @@ struct NonholonomicConfig {
 
 Measurement nonholonomic_measurement(const ErrorStateFilter& filter, const NavState& nav,
                                      const Eigen::Vector3d& angular_rate_b_rad_s, const NonholonomicConfig& cfg,
-                                     double gate_sigma);
+                                     double gate_sigma, Eigen::Index lateral_axis = 1);
 
 }  // namespace sinu::est
