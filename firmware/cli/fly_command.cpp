@@ -5,9 +5,11 @@
 // data-ready edge, send the solution to the outputs the configuration turns
 // on; a health line a second on stderr. With --emulate the same loop runs on
 // the host against a dataset (host/emulate): hardware in the loop.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <numbers>
 #include <string>
 
 #include "firmware/board/config/fly_setup.hpp"
@@ -61,6 +63,10 @@ void print_end(const board::FlyLoop& loop, const board::OutputDevices& outputs, 
                : n.lost_total_s > 0.0            ? "solution was LOST at times"
                : n.resets() > 0                  ? "solution reset to GNSS at times"
                                                  : "solution ok");
+  if (const est::AlignmentResult& a = loop.unit().navigator().alignment_result(); std::isfinite(a.course_turn_rad))
+    std::fprintf(stderr, "sinu fly: heading turned %.1f deg from the GNSS course at t=%.1f s (the unit's x axis is not "
+                 "along the track: mounted turned, or moving sideways)\n", a.course_turn_rad * 180.0 / std::numbers::pi,
+                 a.course_turn_t_s);
   std::fprintf(stderr, "sinu fly: outputs: %s\n", outputs.summary().c_str());
   if (stats) {
     const board::LoopStats& s = loop.stats();
