@@ -553,7 +553,9 @@ void Navigator::check_course(const GnssObservation& z, double t_now, double dt_b
   alignment_result_.course_turn_t_s = t_now;
   events_ |= nav_flag::kCourseTurned;
   heading_.restart();
-  vehicle_.restart();  // its evidence: the body velocity under the wrong heading
+  // The detector's evidence was the body velocity under the wrong heading (a
+  // car it had already found kept its heading, and the check agreed).
+  if (vehicle_.guess() == VehicleGuess::Undecided) vehicle_.restart();
 }
 
 void Navigator::release_gyro_bias_about_vertical() {
