@@ -105,6 +105,10 @@ inline constexpr const char* heading_source_name(HeadingSource s) {
   return "?";
 }
 
+/// Why the course check turns a heading (check_course), as the programs say it.
+inline constexpr const char* kCourseTurnedCause =
+    "the unit's x axis is not along the track: mounted turned, or moving sideways";
+
 struct AlignmentResult {
   NavState nav;
   Eigen::Vector3d att_sigma_rad{0.02, 0.02, 0.1};  // tilt about north, east; yaw

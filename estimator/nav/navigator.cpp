@@ -538,16 +538,13 @@ void Navigator::check_course(const GnssObservation& z, double t_now, double dt_b
   // deg/s of gyro bias; the heading then ran 15 deg away): the filter
   // restarts from its alignment, at the position and velocity it has now,
   // and the field states (if any) restart with the next field sample.
-  const StateLayout& L = filter_.layout();
-  const double sigma_vd = std::sqrt(filter_.P()(L.vel.start + 2, L.vel.start + 2));
+  const Eigen::Index vd = filter_.layout().vel.start + 2;
+  const double sigma_vd = std::sqrt(filter_.P()(vd, vd));
   filter_ = filter_at_alignment_;
   mag_started_ = false;
   filter_.reset_yaw(nav_, turn, sigma);
   // And on the fix, as at the alignment: the solution drifted under the wrong heading.
-  if (z.has_velocity) {
-    nav_.v_n_m_s.head<2>() = z.v_ne_m_s;
-    filter_.reset_block(L.vel, Eigen::Vector3d(z.sigma_vel_m_s, z.sigma_vel_m_s, sigma_vd));
-  }
+  if (z.has_velocity) seed_velocity_on_fix(z, sigma_vd);
   if (z.has_position && z.has_height) seed_position_on_fix(z, dt_back);
   alignment_result_.course_turn_rad = turn;
   alignment_result_.course_turn_t_s = t_now;
@@ -575,7 +572,6 @@ void Navigator::recover(RecoveryAction action, const GnssObservation& z, double 
   begin_reset(t_meas);
   const StateLayout& L = filter_.layout();
   const double sigma_vd = std::sqrt(filter_.P()(L.vel.start + 2, L.vel.start + 2));
-  const Eigen::Vector3d sigma_v(z.sigma_vel_m_s, z.sigma_vel_m_s, sigma_vd);
   if (action == RecoveryAction::ResetVelocityAndYaw && z.has_velocity) {
     // Turn the heading by the angle between the INS's and the receiver's ground tracks.
     const Eigen::Vector2d v_ins = nav_.v_n_m_s.head<2>();
@@ -591,8 +587,7 @@ void Navigator::recover(RecoveryAction action, const GnssObservation& z, double 
     }
   }
   if (z.has_velocity) {
-    nav_.v_n_m_s.head<2>() = z.v_ne_m_s;
-    filter_.reset_block(L.vel, sigma_v);
+    seed_velocity_on_fix(z, sigma_vd);
     ++counters_.velocity_resets;
     events_ |= nav_flag::kVelocityReset;
   }
@@ -605,6 +600,11 @@ void Navigator::recover(RecoveryAction action, const GnssObservation& z, double 
     ++counters_.position_resets;
     events_ |= nav_flag::kPositionReset;
   }
+}
+
+void Navigator::seed_velocity_on_fix(const GnssObservation& z, double sigma_vd_m_s) {
+  nav_.v_n_m_s.head<2>() = z.v_ne_m_s;
+  filter_.reset_block(filter_.layout().vel, Eigen::Vector3d(z.sigma_vel_m_s, z.sigma_vel_m_s, sigma_vd_m_s));
 }
 
 void Navigator::seed_position_on_fix(const GnssObservation& z, double dt_back) {

@@ -265,6 +265,8 @@ class Navigator {
   void check_course(const GnssObservation& z, double t_now, double dt_back);
   /// Widens the gyro bias about the vertical by heading_bias_widen_rad_s (P at now).
   void release_gyro_bias_about_vertical();
+  /// Sets the horizontal velocity from fix z (its sigma), the vertical's sigma kept as given (NMEA has none).
+  void seed_velocity_on_fix(const GnssObservation& z, double sigma_vd_m_s);
   /// Sets the position (and its covariance) from fix z, taken at dt_back before now.
   void seed_position_on_fix(const GnssObservation& z, double dt_back);
   /// The mean acceleration over the GNSS velocity's lag behind its fix (the

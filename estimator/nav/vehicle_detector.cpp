@@ -32,7 +32,7 @@ void VehicleDetector::add(const NavState& nav, double dt_s, bool aided) {
   sum_vert2_ = keep * sum_vert2_ + v_b.z() * v_b.z() * dt_s;
   if (moving_s_ < cfg_.min_moving_s || turn_rad_ < cfg_.min_turn_rad) return;
   if (vertical_rms_m_s() >= cfg_.max_vertical_rms_m_s) return;
-  if (lateral_rms_m_s() < cfg_.max_lateral_rms_m_s) {  // the contract's mounting
+  if (lateral_rms_about(1) < cfg_.max_lateral_rms_m_s) {  // the contract's mounting
     guess_ = VehicleGuess::Ground;
     decided_at_s_ = nav.t_s;
     return;
@@ -45,13 +45,11 @@ void VehicleDetector::add(const NavState& nav, double dt_s, bool aided) {
   // (the real drive turned 90 deg: 0.6-1.4 m/s across in its first 3
   // minutes; 0.13 along body y as mounted). The vertical limit is what tells
   // an aircraft (1.7-1.8 m/s), and the constraint, once on, holds the heading.
-  lateral_axis_ = 0;
-  if (sum_lat2_ > sum_fwd2_ && lateral_rms_m_s() < cfg_.sideways_lateral_rms_m_s) {
+  if (sum_lat2_ > sum_fwd2_ && lateral_rms_about(0) < cfg_.sideways_lateral_rms_m_s) {
+    lateral_axis_ = 0;
     guess_ = VehicleGuess::Ground;
     decided_at_s_ = nav.t_s;
-    return;
   }
-  lateral_axis_ = 1;
 }
 
 void VehicleDetector::on_constraint(double t_s, bool accepted) {
@@ -65,9 +63,9 @@ void VehicleDetector::on_constraint(double t_s, bool accepted) {
   window_start_s_ = t_s;
 }
 
-double VehicleDetector::lateral_rms_m_s() const {
+double VehicleDetector::lateral_rms_about(int axis) const {
   if (!(weight_s_ > 0.0)) return 0.0;
-  if (lateral_axis_ == 1) return std::sqrt(sum_lat2_ / weight_s_);
+  if (axis == 1) return std::sqrt(sum_lat2_ / weight_s_);
   // Sideways: across the principal axis of the horizontal body velocity (its smaller eigenvalue).
   const double spread = std::hypot(sum_fwd2_ - sum_lat2_, 2.0 * sum_cross_);
   return std::sqrt(std::max(0.0, 0.5 * (sum_fwd2_ + sum_lat2_ - spread)) / weight_s_);

@@ -71,11 +71,13 @@ class VehicleDetector {
   double decided_at_s() const { return decided_at_s_; }
   /// The evidence so far (or at the decision): body-frame RMS over the memory [m/s] (lateral: along
   /// lateral_axis()), time moving [s].
-  double lateral_rms_m_s() const;
+  double lateral_rms_m_s() const { return lateral_rms_about(lateral_axis_); }
   double vertical_rms_m_s() const;
   double moving_s() const { return moving_s_; }
 
  private:
+  /// Across body y (axis 1), or, for axis 0, across the principal axis of the horizontal body velocity.
+  double lateral_rms_about(int axis) const;
   VehicleDetectorConfig cfg_;
   VehicleGuess guess_ = VehicleGuess::Undecided;
   double moving_s_ = 0.0, weight_s_ = 0.0, turn_rad_ = 0.0, sum_lat2_ = 0.0, sum_fwd2_ = 0.0, sum_vert2_ = 0.0;

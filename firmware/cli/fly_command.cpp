@@ -64,9 +64,8 @@ void print_end(const board::FlyLoop& loop, const board::OutputDevices& outputs, 
                : n.resets() > 0                  ? "solution reset to GNSS at times"
                                                  : "solution ok");
   if (const est::AlignmentResult& a = loop.unit().navigator().alignment_result(); std::isfinite(a.course_turn_rad))
-    std::fprintf(stderr, "sinu fly: heading turned %.1f deg from the GNSS course at t=%.1f s (the unit's x axis is not "
-                 "along the track: mounted turned, or moving sideways)\n", a.course_turn_rad * 180.0 / std::numbers::pi,
-                 a.course_turn_t_s);
+    std::fprintf(stderr, "sinu fly: heading turned %.1f deg from the GNSS course at t=%.1f s (%s)\n",
+                 a.course_turn_rad * 180.0 / std::numbers::pi, a.course_turn_t_s, est::kCourseTurnedCause);
   std::fprintf(stderr, "sinu fly: outputs: %s\n", outputs.summary().c_str());
   if (stats) {
     const board::LoopStats& s = loop.stats();

@@ -120,9 +120,9 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
               num(r.source.corrupt_sentences).c_str());
   if (r.aligned && std::isfinite(r.alignment.course_turn_rad))
     std::printf("  heading: aligned on the GNSS course, turned %s deg at t=%.1f s where the in-motion alignment contradicted "
-                "it (the unit's x axis is not along the track: mounted turned, or moving sideways)\n",
-                num(r.alignment.course_turn_rad * 180.0 / std::numbers::pi).c_str(),
-                r.alignment.course_turn_t_s);
+                "it (%s)\n",
+                num(r.alignment.course_turn_rad * 180.0 / std::numbers::pi).c_str(), r.alignment.course_turn_t_s,
+                est::kCourseTurnedCause);
   if (const std::string why_no_mag = r.mag_refused_reason(); !why_no_mag.empty())
     std::printf("  magnetometer NOT USED: %s\n", why_no_mag.c_str());
   if (r.gnss.without_height > 0 && r.gnss.used > 0)

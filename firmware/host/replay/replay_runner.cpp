@@ -72,7 +72,7 @@ class ReplayObserver final : public est::NavObserver {
     if ((o.flags & f::kCourseTurned) && warnings_ < kMaxWarnings) {
       ++warnings_;
       std::fprintf(stderr, "sinu replay: warning: t=%.3f s: heading turned: the in-motion alignment contradicts the GNSS "
-                   "course it was aligned on (a unit mounted turned, or moving sideways)\n", o.nav.t_s);
+                   "course it was aligned on (%s)\n", o.nav.t_s, est::kCourseTurnedCause);
     }
     if (lost && !was_lost_ && warnings_ < kMaxWarnings) {
       ++warnings_;

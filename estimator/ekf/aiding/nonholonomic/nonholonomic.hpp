@@ -6,7 +6,7 @@
 //   v_b = C_bn v_n, rows lateral_axis and z.
 // With C_nb_hat = (I - [phi x]) C_nb and dv = v_hat - v:
 //   v_b_hat = C_bn (v + dv) + C_bn [phi x] v = v_b + C_bn dv - C_bn [v x] phi, so
-//   H_vel = C_bn (rows y, z),  H_att = -C_bn [v x] (rows y, z).
+//   H_vel = C_bn (rows lateral_axis, z),  H_att = -C_bn [v x] (the same rows).
 // The noise covers sideslip, body roll on springs, an IMU not quite on the
 // vehicle's axes, and the lateral speed a turn gives an IMU ahead of the rear
 // axle (sigma grows with the yaw rate).
