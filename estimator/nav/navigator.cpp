@@ -700,7 +700,7 @@ void Navigator::fuse_vehicle_constraints(const ImuSample& s, const BodyRates& no
   last_nhc_t_s_ = s.t_s;
   const bool ok = fuse(AidingSource::Nonholonomic,
                        nonholonomic_measurement(filter_, nav_, now.angular_rate_b_rad_s, cfg_.nonholonomic,
-                                                cfg_.gate_sigma, nhc_lateral_axis()),
+                                                cfg_.gate_sigma, nhc_axes()),
                        s.t_s);
   if (cfg_.vehicle == VehicleKind::Auto) {
     vehicle_.on_constraint(s.t_s, ok);

@@ -216,8 +216,8 @@ class Navigator {
     return cfg_.vehicle == VehicleKind::Ground ||
            (cfg_.vehicle == VehicleKind::Auto && vehicle_.guess() == VehicleGuess::Ground);
   }
-  /// The body axis across the vehicle for the constraint: y, or x where the detector found the unit sideways.
-  Eigen::Index nhc_lateral_axis() const { return cfg_.vehicle == VehicleKind::Auto ? vehicle_.lateral_axis() : 1; }
+  /// The vehicle's axes for the constraint: the contract's (y, z), or as the detector found a unit on a bracket.
+  VehicleAxes nhc_axes() const { return cfg_.vehicle == VehicleKind::Auto ? vehicle_.axes() : VehicleAxes{}; }
   const VehicleDetector& vehicle_detector() const { return vehicle_; }
   /// How the alignment went (valid once aligned): the heading's source, the declination used.
   const AlignmentResult& alignment_result() const { return alignment_result_; }

@@ -4,52 +4,113 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Eigenvalues>
+
 namespace sinu::est {
+
+namespace {
+constexpr double kG = 9.80665;  // [m/s^2]: a lateral acceleration in g (the bank it would need)
+double wrapped(double angle_rad) {
+  return angle_rad - 2.0 * std::numbers::pi * std::round(angle_rad / (2.0 * std::numbers::pi));
+}
+}  // namespace
 
 void VehicleDetector::add(const NavState& nav, double dt_s, bool aided) {
   if (guess_ != VehicleGuess::Undecided) return;
   const Eigen::Matrix3d C_nb = nav.C_nb();
   const double yaw = std::atan2(C_nb(1, 0), C_nb(0, 0));
-  const bool moving = aided && nav.v_n_m_s.head<2>().norm() >= cfg_.min_speed_m_s;
-  double turn = 0.0;
-  if (moving && have_yaw_) {
-    turn = yaw - last_yaw_rad_;
-    turn = std::abs(turn - 2.0 * std::numbers::pi * std::round(turn / (2.0 * std::numbers::pi)));
+  const double speed = nav.v_n_m_s.head<2>().norm();
+  const double course = std::atan2(nav.v_n_m_s.y(), nav.v_n_m_s.x());
+  const bool moving = aided && speed >= cfg_.min_speed_m_s;
+  double turn = 0.0, lateral_accel_g = 0.0;
+  if (moving && have_yaw_ && dt_s > 0.0) {
+    turn = std::abs(wrapped(yaw - last_yaw_rad_));
+    lateral_accel_g = speed * wrapped(course - last_course_rad_) / dt_s / kG;  // to the right, as a bank
   }
   last_yaw_rad_ = yaw;
+  last_course_rad_ = course;
   have_yaw_ = moving;
   if (!moving) return;
   // Exponential memory over the time spent moving: the evidence is the last
   // `memory_s` of motion, so a start while the solution still converges is forgotten.
   const Eigen::Vector3d v_b = C_nb.transpose() * nav.v_n_m_s;
+  const Eigen::Vector3d down_b = C_nb.row(2).transpose();
   const double keep = std::exp(-dt_s / cfg_.memory_s);
   moving_s_ += dt_s;
   weight_s_ = keep * weight_s_ + dt_s;
   turn_rad_ = keep * turn_rad_ + turn;
-  sum_lat2_ = keep * sum_lat2_ + v_b.y() * v_b.y() * dt_s;
-  sum_fwd2_ = keep * sum_fwd2_ + v_b.x() * v_b.x() * dt_s;
-  sum_cross_ = keep * sum_cross_ + v_b.x() * v_b.y() * dt_s;
-  sum_vert2_ = keep * sum_vert2_ + v_b.z() * v_b.z() * dt_s;
+  vv_ = keep * vv_ + v_b * v_b.transpose() * dt_s;
+  v_ = keep * v_ + v_b * dt_s;
+  down_ = keep * down_ + down_b * dt_s;
+  down_accel_ = keep * down_accel_ + down_b * (lateral_accel_g * dt_s);
+  accel_ = keep * accel_ + lateral_accel_g * dt_s;
+  accel2_ = keep * accel2_ + lateral_accel_g * lateral_accel_g * dt_s;
   if (moving_s_ < cfg_.min_moving_s || turn_rad_ < cfg_.min_turn_rad) return;
-  if (vertical_rms_m_s() >= cfg_.max_vertical_rms_m_s) return;
-  if (lateral_rms_about(1) < cfg_.max_lateral_rms_m_s) {  // the contract's mounting
+  if (rms_along(Eigen::Vector3d::UnitZ()) < cfg_.max_vertical_rms_m_s &&
+      rms_along(Eigen::Vector3d::UnitY()) < cfg_.max_lateral_rms_m_s) {  // the contract's mounting
     guess_ = VehicleGuess::Ground;
     decided_at_s_ = nav.t_s;
     return;
   }
-  // Mounted sideways: the motion along body y, and across it (about the
-  // principal axis of the horizontal body velocity, which a constant heading
-  // error turns) within sideways_lateral_rms_m_s. Looser: such a unit
-  // without a magnetometer had its heading from the course check, known to
-  // 5-20 deg, and without the constraint a car's heading wanders by degrees
-  // (the real drive turned 90 deg: 0.6-1.4 m/s across in its first 3
-  // minutes; 0.13 along body y as mounted). The vertical limit is what tells
-  // an aircraft (1.7-1.8 m/s), and the constraint, once on, holds the heading.
-  if (sum_lat2_ > sum_fwd2_ && lateral_rms_about(0) < cfg_.sideways_lateral_rms_m_s) {
-    lateral_axis_ = 0;
+  VehicleAxes found;
+  if (found_on_bracket(found)) {
+    axes_ = found;
+    on_bracket_ = true;
     guess_ = VehicleGuess::Ground;
     decided_at_s_ = nav.t_s;
   }
+}
+
+bool VehicleDetector::found_on_bracket(VehicleAxes& axes) const {
+  // Forward: the principal axis of the body velocity (a constant heading
+  // error turns it with the mount; the constraint then holds that heading).
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+  eig.computeDirect(vv_ / weight_s_);
+  Eigen::Vector3d forward = eig.eigenvectors().col(2);
+  if (forward.dot(v_) < 0.0) forward = -forward;
+  // Vertical: the mean down, square to forward (roads are level on average).
+  Eigen::Vector3d vertical = down_ - forward * forward.dot(down_);
+  if (!(vertical.norm() > 1e-6 * weight_s_)) return false;
+  vertical.normalize();
+  const Eigen::Vector3d lateral = vertical.cross(forward);
+  // Across the motion within mounted_lateral_rms_m_s: looser than the
+  // contract's, such a unit without a magnetometer had its heading from the
+  // course check, known to 5-20 deg, and without the constraint a car's
+  // heading wanders by degrees (the real drive turned 90 deg: 0.6-1.4 m/s
+  // across in its first 3 minutes; 0.13 along body y as mounted). The
+  // vertical limit and the bank tell an aircraft.
+  if (rms_along(lateral) >= cfg_.mounted_lateral_rms_m_s || rms_along(vertical) >= cfg_.max_vertical_rms_m_s)
+    return false;
+  const double mean_accel = accel_ / weight_s_;
+  const double accel_var = accel2_ / weight_s_ - mean_accel * mean_accel;
+  if (!(accel_var >= cfg_.min_lateral_accel_spread_g * cfg_.min_lateral_accel_spread_g)) return false;
+  // The bank (down along the lateral axis: sin of the roll) regressed on the lateral acceleration.
+  const double bank_per_g =
+      (lateral.dot(down_accel_) / weight_s_ - lateral.dot(down_) / weight_s_ * mean_accel) / accel_var;
+  if (!(bank_per_g < cfg_.max_bank_per_g)) return false;
+  axes.lateral_b = lateral;
+  axes.vertical_b = vertical;
+  // Square to the vehicle, as a unit on a bracket mostly is: the yaw found
+  // from the body velocity carries the heading's error of the moment (no
+  // magnetometer: 5-6 deg of sigma; the real drive turned 90 deg was found
+  // at 76 deg, 33 s after the course check turned it, and the constraint then
+  // held that heading 14 deg off for the rest of the drive: 11.5 m over the
+  // ten outages), the tilt the solution's tilt error (about 1 deg there).
+  // An angle within `square_yaw_rad` (yaw) or `square_tilt_rad` (pitch,
+  // roll) of a quarter turn is taken as that quarter turn, and the
+  // constraint corrects the solution instead of holding its error.
+  const Eigen::Vector3d euler = axes.unit_euler_rad();
+  const auto squared = [](double angle_rad, double within_rad) {
+    const double quarter = std::numbers::pi / 2.0, square = quarter * std::round(angle_rad / quarter);
+    return std::abs(angle_rad - square) < within_rad ? square : angle_rad;
+  };
+  const Eigen::Matrix3d C_vb = (Eigen::AngleAxisd(squared(euler.z(), cfg_.square_yaw_rad), Eigen::Vector3d::UnitZ()) *
+                                Eigen::AngleAxisd(squared(euler.y(), cfg_.square_tilt_rad), Eigen::Vector3d::UnitY()) *
+                                Eigen::AngleAxisd(squared(euler.x(), cfg_.square_tilt_rad), Eigen::Vector3d::UnitX()))
+                                   .toRotationMatrix();
+  axes.lateral_b = C_vb.row(1).transpose();
+  axes.vertical_b = C_vb.row(2).transpose();
+  return true;
 }
 
 void VehicleDetector::on_constraint(double t_s, bool accepted) {
@@ -63,13 +124,8 @@ void VehicleDetector::on_constraint(double t_s, bool accepted) {
   window_start_s_ = t_s;
 }
 
-double VehicleDetector::lateral_rms_about(int axis) const {
-  if (!(weight_s_ > 0.0)) return 0.0;
-  if (axis == 1) return std::sqrt(sum_lat2_ / weight_s_);
-  // Sideways: across the principal axis of the horizontal body velocity (its smaller eigenvalue).
-  const double spread = std::hypot(sum_fwd2_ - sum_lat2_, 2.0 * sum_cross_);
-  return std::sqrt(std::max(0.0, 0.5 * (sum_fwd2_ + sum_lat2_ - spread)) / weight_s_);
+double VehicleDetector::rms_along(const Eigen::Vector3d& a) const {
+  return weight_s_ > 0.0 ? std::sqrt(std::max(0.0, a.dot(vv_ * a)) / weight_s_) : 0.0;
 }
-double VehicleDetector::vertical_rms_m_s() const { return weight_s_ > 0.0 ? std::sqrt(sum_vert2_ / weight_s_) : 0.0; }
 
 }  // namespace sinu::est

@@ -14,11 +14,20 @@
 // rejected more often than not over `revert_window_s` (the guess was wrong:
 // an aircraft's take-off run, then flight), it goes back to air for good.
 //
-// A unit mounted sideways (its x axis across the vehicle: the contract says
-// x forward, a bracket may not) moves along its body x hardly at all: its
-// body x is then the lateral axis, and the constraint is applied so
-// (lateral_axis). Only the two body axes: a unit at 45 deg on its mount
-// stays undetected (an aircraft to the filter, no constraint).
+// A unit on a bracket (turned on it, tilted: the contract says x forward, a
+// bracket may not) moves along a body direction that is not x. Its body
+// velocity then lies along the principal axis of its second moment, the
+// vehicle's forward axis; its vertical axis is the mean down in the body
+// frame made square to it; the constraint acts along the lateral and vertical
+// axes so found (axes()). What tells such a car from an aircraft at a steady
+// angle of attack (whose body velocity is just as fixed: the simulator's fixed
+// wing reads like a car with its unit pitched 3 deg) is the turn: an aircraft
+// banks into it, by atan(a / g) of its lateral acceleration a, a car does not
+// (it leans out, a few degrees per g). The slope of the body's bank on a / g
+// over the memory: the real car -0.03..-0.16, the simulator's fixed wings
+// 0.84-0.95, the real quadcopter 0.71-0.79. A steady circle is no evidence
+// either way (every bank is then a mount), so the lateral acceleration must
+// vary by `min_lateral_accel_spread_g`.
 //
 // Measured (the solution without the constraint): the real car drive_0708,
 // body z 0.05-0.10 m/s RMS per minute, lateral 0.07-0.43 (heading not yet
@@ -26,6 +35,7 @@
 // quadcopter uav_log171 1.7 / 2.1 m/s.
 #include <cstdint>
 
+#include "estimator/ekf/aiding/nonholonomic/nonholonomic.hpp"
 #include "estimator/ins/nav_state.hpp"
 
 namespace sinu::est {
@@ -37,7 +47,11 @@ struct VehicleDetectorConfig {
   double min_turn_rad = 1.57;          // heading changes summed (with the same memory) while moving
   double max_vertical_rms_m_s = 0.25;  // body z
   double max_lateral_rms_m_s = 0.5;    // body y: looser, the heading is the least known angle
-  double sideways_lateral_rms_m_s = 1.0;  // a unit mounted sideways, about its motion's axis (vehicle_detector.cpp)
+  double mounted_lateral_rms_m_s = 1.0;  // a unit on a bracket: across its motion's axis (vehicle_detector.cpp)
+  double max_bank_per_g = 0.4;           // a unit on a bracket: the body banks less than this into a turn
+  double min_lateral_accel_spread_g = 0.03;  // ... judged only where the turns vary (the real car: 0.08 g RMS)
+  double square_yaw_rad = 0.35;    // a bracket's yaw found within 20 deg of a quarter turn is that turn,
+  double square_tilt_rad = 0.052;  // its pitch and roll within 3 deg (vehicle_detector.cpp)
   double revert_window_s = 10.0;
 };
 
@@ -53,8 +67,14 @@ class VehicleDetector {
   /// Forgets the evidence: the solution it came from was wrong (a heading turned by the course check).
   void restart() {
     guess_ = VehicleGuess::Undecided;
-    moving_s_ = weight_s_ = turn_rad_ = sum_lat2_ = sum_fwd2_ = sum_vert2_ = sum_cross_ = decided_at_s_ = 0.0;
-    lateral_axis_ = 1;
+    moving_s_ = weight_s_ = turn_rad_ = decided_at_s_ = 0.0;
+    vv_.setZero();
+    v_.setZero();
+    down_.setZero();
+    down_accel_.setZero();
+    accel_ = accel2_ = 0.0;
+    axes_ = VehicleAxes{};
+    on_bracket_ = false;
     have_yaw_ = false;
     nhc_tried_ = nhc_rejected_ = 0;
     window_start_s_ = 0.0;
@@ -66,24 +86,34 @@ class VehicleDetector {
   void on_constraint(double t_s, bool accepted);
 
   VehicleGuess guess() const { return guess_; }
-  /// The body axis across the vehicle: 1 (y, the contract's x forward) or 0 (x: mounted sideways).
-  int lateral_axis() const { return lateral_axis_; }
+  /// The vehicle's lateral and vertical axes in the body frame: y and z as the contract mounts the unit, or as
+  /// found for a unit on a bracket (on_bracket()).
+  const VehicleAxes& axes() const { return axes_; }
+  bool on_bracket() const { return on_bracket_; }
   double decided_at_s() const { return decided_at_s_; }
-  /// The evidence so far (or at the decision): body-frame RMS over the memory [m/s] (lateral: along
-  /// lateral_axis()), time moving [s].
-  double lateral_rms_m_s() const { return lateral_rms_about(lateral_axis_); }
-  double vertical_rms_m_s() const;
+  /// The evidence so far (or at the decision): the body velocity's RMS along axes() over the memory [m/s], time
+  /// moving [s].
+  double lateral_rms_m_s() const { return rms_along(axes_.lateral_b); }
+  double vertical_rms_m_s() const { return rms_along(axes_.vertical_b); }
   double moving_s() const { return moving_s_; }
 
  private:
-  /// Across body y (axis 1), or, for axis 0, across the principal axis of the horizontal body velocity.
-  double lateral_rms_about(int axis) const;
+  double rms_along(const Eigen::Vector3d& a) const;
+  /// The axes of a unit on a bracket from the evidence; true when they hold the velocity and the body does not
+  /// bank into the turns.
+  bool found_on_bracket(VehicleAxes& axes) const;
   VehicleDetectorConfig cfg_;
   VehicleGuess guess_ = VehicleGuess::Undecided;
-  double moving_s_ = 0.0, weight_s_ = 0.0, turn_rad_ = 0.0, sum_lat2_ = 0.0, sum_fwd2_ = 0.0, sum_vert2_ = 0.0;
-  double sum_cross_ = 0.0;  // body x times y
-  int lateral_axis_ = 1;
-  double last_yaw_rad_ = 0.0, decided_at_s_ = 0.0, window_start_s_ = 0.0;
+  // Exponentially weighted sums over the time moving (weight_s_ is the sum of the weights):
+  Eigen::Matrix3d vv_ = Eigen::Matrix3d::Zero();  // body velocity's second moment [m^2/s^2 s]
+  Eigen::Vector3d v_ = Eigen::Vector3d::Zero();   // body velocity [m/s s]
+  Eigen::Vector3d down_ = Eigen::Vector3d::Zero();  // the navigation frame's down in the body frame [s]
+  Eigen::Vector3d down_accel_ = Eigen::Vector3d::Zero();  // that times the lateral acceleration [g s]
+  double accel_ = 0.0, accel2_ = 0.0;  // lateral acceleration (speed times course rate) [g s], [g^2 s]
+  double moving_s_ = 0.0, weight_s_ = 0.0, turn_rad_ = 0.0;
+  VehicleAxes axes_;
+  bool on_bracket_ = false;
+  double last_yaw_rad_ = 0.0, last_course_rad_ = 0.0, decided_at_s_ = 0.0, window_start_s_ = 0.0;
   bool have_yaw_ = false;
   int nhc_tried_ = 0, nhc_rejected_ = 0;
 };

@@ -79,10 +79,13 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
   }
   const replay::VehicleOutcome& v = r.vehicle;
   if (v.configured == est::VehicleKind::Auto && v.guess != est::VehicleGuess::Undecided) {
-    std::printf("  vehicle: moves like a ground vehicle from t=%.1f s (body-frame velocity while moving: lateral%s %.2f, "
-                "vertical %.2f m/s RMS): non-holonomic constraint %s\n",
-                v.detected_at_s, v.mounted_sideways ? " (body x: the unit is mounted sideways)" : "", v.lateral_rms_m_s,
-                v.vertical_rms_m_s,
+    char mount[160] = "";
+    if (v.on_bracket)
+      std::snprintf(mount, sizeof mount, "; the unit sits turned %.1f deg, pitched %.1f deg, rolled %.1f deg on it",
+                    v.unit_yaw_deg, v.unit_pitch_deg, v.unit_roll_deg);
+    std::printf("  vehicle: moves like a ground vehicle from t=%.1f s (velocity while moving, across the vehicle %.2f, "
+                "along its vertical %.2f m/s RMS%s): non-holonomic constraint %s\n",
+                v.detected_at_s, v.lateral_rms_m_s, v.vertical_rms_m_s, mount,
                 v.guess == est::VehicleGuess::Ground ? "on (--vehicle air keeps it off)"
                                                      : "on, then off again: the constraint did not hold");
   }

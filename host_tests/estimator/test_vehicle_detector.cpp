@@ -15,26 +15,40 @@ namespace {
 
 constexpr double kDt = 0.025;  // 40 Hz
 constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kG = 9.80665;
 
-/// A vehicle circling at `speed` (a full turn every `turn_period_s`) whose
-/// velocity in the body frame is (speed, lateral, vertical): the body's
-/// heading leads or trails the track by the crab angle, its pitch the
-/// flight path by the angle of attack.
-est::NavState state_at(double t, double speed, double lateral_m_s, double vertical_m_s, double turn_period_s) {
-  const double track = 2.0 * std::numbers::pi * t / turn_period_s;
-  const double crab = std::atan2(lateral_m_s, speed), aoa = std::atan2(vertical_m_s, speed);
+/// How a vehicle moves: its velocity in its own forward-right-down axes is
+/// (speed, lateral, vertical) (the crab angle, the angle of attack); it
+/// turns at a rate between 0.2 and 1.8 times a full turn per
+/// `turn_period_s`, varying over 40 s (gentle and sharp turns); an aircraft
+/// banks into the turn about its track (atan of its lateral acceleration in
+/// g, as a coordinated turn does), a car does not; the unit sits on it turned by
+/// `unit_on_vehicle` (identity: as the contract mounts it).
+struct Motion {
+  double speed = 10.0, lateral_m_s = 0.0, vertical_m_s = 0.0, turn_period_s = 60.0;
+  bool banks = false;
+  Eigen::Quaterniond unit_on_vehicle = Eigen::Quaterniond::Identity();
+};
+
+est::NavState state_at(double t, const Motion& m) {
+  const double w0 = 2.0 * std::numbers::pi / m.turn_period_s, k = 2.0 * std::numbers::pi / 40.0;
+  const double rate = w0 * (1.0 + 0.8 * std::sin(k * t));
+  const double track = w0 * (t - 0.8 / k * (std::cos(k * t) - 1.0));
+  const double crab = std::atan2(m.lateral_m_s, m.speed), aoa = std::atan2(m.vertical_m_s, m.speed);
+  const double bank = m.banks ? std::atan(std::hypot(m.speed, m.lateral_m_s) * rate / kG) : 0.0;
+  // The track's frame, banked about the track, then the vehicle in it (crab, angle of attack).
+  const Eigen::Quaterniond q_nv = est::quat_from_euler(bank, 0.0, track) * est::quat_from_euler(0.0, aoa, -crab);
   est::NavState nav;
   nav.t_s = t;
-  nav.q_nb = est::quat_from_euler(0.0, aoa, track - crab);
-  const Eigen::Vector3d v_b(speed, lateral_m_s, vertical_m_s);
-  nav.v_n_m_s = nav.C_nb() * v_b;
+  nav.q_nb = q_nv * m.unit_on_vehicle;
+  nav.v_n_m_s = q_nv * Eigen::Vector3d(m.speed, m.lateral_m_s, m.vertical_m_s);
   return nav;
 }
 
-est::VehicleGuess run(double seconds, double speed, double lateral, double vertical, double& decided_at) {
+est::VehicleGuess run(double seconds, const Motion& m, double& decided_at) {
   est::VehicleDetector d;
   d.configure({});
-  for (double t = 0.0; t < seconds; t += kDt) d.add(state_at(t, speed, lateral, vertical, 60.0), kDt, true);
+  for (double t = 0.0; t < seconds; t += kDt) d.add(state_at(t, m), kDt, true);
   decided_at = d.decided_at_s();
   return d.guess();
 }
@@ -43,7 +57,7 @@ TEST(VehicleDetector, ACarThatDrivesAndTurnsIsAGroundVehicleAfterHalfAMinute) {
   double at = 0.0;
   // 10 m/s, 0.1 m/s of sideways and vertical velocity: what the real car's
   // solution shows (0.05-0.1 vertical, 0.1-0.4 lateral, docs/experiments.md).
-  EXPECT_EQ(run(120.0, 10.0, 0.1, 0.1, at), est::VehicleGuess::Ground);
+  EXPECT_EQ(run(120.0, {.speed = 10.0, .lateral_m_s = 0.1, .vertical_m_s = 0.1}, at), est::VehicleGuess::Ground);
   // Not before the 30 s of motion the evidence needs (a quarter turn takes 15 s here).
   EXPECT_GE(at, 30.0 - 1e-9);
   EXPECT_LT(at, 31.0);
@@ -51,60 +65,90 @@ TEST(VehicleDetector, ACarThatDrivesAndTurnsIsAGroundVehicleAfterHalfAMinute) {
 
 TEST(VehicleDetector, AircraftAreNeverTakenForGroundVehicles) {
   double at = 0.0;
-  // A fixed wing at 40 m/s and 2 deg angle of attack: 1.4 m/s along body z.
-  EXPECT_EQ(run(600.0, 40.0, 0.0, 40.0 * std::tan(2.0 * kDeg), at), est::VehicleGuess::Undecided);
+  // Each banks into its turns. A fixed wing at 40 m/s and 2 deg angle of
+  // attack: 1.4 m/s along body z, a body velocity as fixed as a car's with
+  // its unit pitched 2 deg (the bank is what tells them apart).
+  EXPECT_EQ(run(600.0, {.speed = 40.0, .vertical_m_s = 40.0 * std::tan(2.0 * kDeg), .banks = true}, at),
+            est::VehicleGuess::Undecided);
   // Crabbing into a crosswind: 2 m/s sideways, 0.2 m/s along z.
-  EXPECT_EQ(run(600.0, 25.0, 2.0, 0.2, at), est::VehicleGuess::Undecided);
+  EXPECT_EQ(run(600.0, {.speed = 25.0, .lateral_m_s = 2.0, .vertical_m_s = 0.2, .banks = true}, at),
+            est::VehicleGuess::Undecided);
   // A multirotor pitched 10 deg into 8 m/s of forward flight.
-  EXPECT_EQ(run(600.0, 8.0, 0.0, 8.0 * std::tan(10.0 * kDeg), at), est::VehicleGuess::Undecided);
-  // Flying sideways, rolled 10 deg into it: the sideways mounting's test sees its body z too.
-  EXPECT_EQ(run(600.0, 0.2, 8.0, 8.0 * std::tan(10.0 * kDeg), at), est::VehicleGuess::Undecided);
+  EXPECT_EQ(run(600.0, {.speed = 8.0, .vertical_m_s = 8.0 * std::tan(10.0 * kDeg), .banks = true}, at),
+            est::VehicleGuess::Undecided);
+  // Flying sideways, rolled 10 deg into it.
+  EXPECT_EQ(run(600.0, {.speed = 0.2, .lateral_m_s = 8.0, .vertical_m_s = 8.0 * std::tan(10.0 * kDeg), .banks = true},
+                at),
+            est::VehicleGuess::Undecided);
+  // Without the bank the first three would be cars with their units turned or
+  // pitched: what the test above rests on.
+  EXPECT_EQ(run(600.0, {.speed = 40.0, .vertical_m_s = 40.0 * std::tan(2.0 * kDeg)}, at), est::VehicleGuess::Ground);
 }
 
-// A unit mounted sideways (its x axis to the car's right) on a car circling
-// at 10 m/s, whose solution's heading is `heading_error_deg` off (after the
-// course check: 5-20 deg) and 0.1 m/s vertical: its body velocity lies along
-// body y, turned by the heading error.
-est::VehicleDetector sideways_car(double heading_error_deg) {
+// A car at 10 m/s, 0.1 m/s vertical, with the unit sitting on it turned by
+// `unit_on_vehicle`, the solution's heading `heading_error_deg` off (after
+// the course check: 5-20 deg), which turns the body velocity with it.
+est::VehicleDetector car_with_unit(const Eigen::Quaterniond& unit_on_vehicle, double heading_error_deg) {
   est::VehicleDetector d;
   d.configure({});
+  const Motion m{.speed = 10.0, .vertical_m_s = 0.1, .unit_on_vehicle = unit_on_vehicle};
+  const Eigen::Quaterniond error(Eigen::AngleAxisd(heading_error_deg * kDeg, Eigen::Vector3d::UnitZ()));
   for (double t = 0.0; t < 120.0; t += kDt) {
-    const double track = 2.0 * std::numbers::pi * t / 60.0;
-    est::NavState nav;
-    nav.t_s = t;
-    nav.q_nb = est::quat_from_euler(0.0, 0.0, track - std::numbers::pi / 2.0 + heading_error_deg * kDeg);
-    nav.v_n_m_s = Eigen::Vector3d(10.0 * std::cos(track), 10.0 * std::sin(track), 0.1);
+    est::NavState nav = state_at(t, m);
+    nav.q_nb = error * nav.q_nb;
     d.add(nav, kDt, true);
   }
   return d;
 }
 
-TEST(VehicleDetector, AUnitMountedSidewaysIsFoundWithItsLateralAxis) {
-  for (const double error_deg : {0.0, 7.0, -15.0}) {
-    const est::VehicleDetector d = sideways_car(error_deg);
-    EXPECT_EQ(d.guess(), est::VehicleGuess::Ground) << error_deg;
-    EXPECT_EQ(d.lateral_axis(), 0) << "the body x is across the car";
-    // Across the motion's own axis: the constant heading error turns it, it adds nothing across.
-    EXPECT_LT(d.lateral_rms_m_s(), 0.05) << error_deg;
+TEST(VehicleDetector, AUnitOnABracketIsFoundWithItsAttitudeOnTheVehicle) {
+  struct Mount {
+    double roll_deg, pitch_deg, yaw_deg;
+  };
+  for (const Mount mount : {Mount{0.0, 0.0, 90.0}, Mount{0.0, 0.0, 45.0}, Mount{0.0, 10.0, 0.0},
+                            Mount{5.0, -8.0, -135.0}}) {
+    const Eigen::Quaterniond q = est::quat_from_euler(mount.roll_deg * kDeg, mount.pitch_deg * kDeg, mount.yaw_deg * kDeg);
+    for (const double error_deg : {0.0, 7.0, -15.0}) {
+      SCOPED_TRACE(::testing::Message() << "yaw " << mount.yaw_deg << " pitch " << mount.pitch_deg << " roll "
+                                        << mount.roll_deg << ", heading " << error_deg << " deg off");
+      const est::VehicleDetector d = car_with_unit(q, error_deg);
+      ASSERT_EQ(d.guess(), est::VehicleGuess::Ground);
+      EXPECT_TRUE(d.on_bracket());
+      // Found from the velocity, the yaw on the vehicle takes the heading's
+      // error, except where the bracket is square (within 20 deg of a
+      // quarter turn): then the quarter turn, and the constraint corrects the
+      // heading. Pitch and roll come from the velocity's and gravity's
+      // directions, within the 0.1 m/s vertical at 10 m/s (0.6 deg).
+      const bool square = std::abs(std::remainder(mount.yaw_deg, 90.0)) < 1e-9;
+      const Eigen::Vector3d found = d.axes().unit_euler_rad() / kDeg;
+      EXPECT_NEAR(std::remainder(found.z() - (square ? mount.yaw_deg : mount.yaw_deg + error_deg), 360.0), 0.0, 0.7);
+      EXPECT_NEAR(found.y(), mount.pitch_deg, 0.7);
+      EXPECT_NEAR(found.x(), mount.roll_deg, 0.7);
+      // Across the vehicle: the heading error's share of the speed where the
+      // bracket is square; else nothing (the error turned the axis with it).
+      EXPECT_NEAR(d.lateral_rms_m_s(), square ? 10.0 * std::abs(std::sin(error_deg * kDeg)) : 0.0, 0.05);
+    }
   }
-  // As the contract mounts it, the lateral axis stays body y.
+  // As the contract mounts it, the axes stay body y and z.
   est::VehicleDetector d;
   d.configure({});
-  for (double t = 0.0; t < 120.0; t += kDt) d.add(state_at(t, 10.0, 0.1, 0.1, 60.0), kDt, true);
+  for (double t = 0.0; t < 120.0; t += kDt)
+    d.add(state_at(t, {.speed = 10.0, .lateral_m_s = 0.1, .vertical_m_s = 0.1}), kDt, true);
   EXPECT_EQ(d.guess(), est::VehicleGuess::Ground);
-  EXPECT_EQ(d.lateral_axis(), 1);
+  EXPECT_FALSE(d.on_bracket());
+  EXPECT_EQ(d.axes().lateral_b, Eigen::Vector3d::UnitY());
 }
 
 TEST(VehicleDetector, StraightOrSlowOrUnaidedMotionIsNoEvidence) {
   est::VehicleDetector d;
   d.configure({});
   // A car-like body velocity, but along a straight line: no turn, no decision.
-  for (double t = 0.0; t < 300.0; t += kDt) d.add(state_at(t, 10.0, 0.0, 0.0, 1e9), kDt, true);
+  for (double t = 0.0; t < 300.0; t += kDt) d.add(state_at(t, {.speed = 10.0, .turn_period_s = 1e9}), kDt, true);
   EXPECT_EQ(d.guess(), est::VehicleGuess::Undecided);
   // Turning at walking pace (below 3 m/s), or without GNSS (dead reckoning): not counted.
   d.configure({});
-  for (double t = 0.0; t < 300.0; t += kDt) d.add(state_at(t, 2.0, 0.0, 0.0, 60.0), kDt, true);
-  for (double t = 0.0; t < 300.0; t += kDt) d.add(state_at(t, 10.0, 0.0, 0.0, 60.0), kDt, false);
+  for (double t = 0.0; t < 300.0; t += kDt) d.add(state_at(t, {.speed = 2.0}), kDt, true);
+  for (double t = 0.0; t < 300.0; t += kDt) d.add(state_at(t, {.speed = 10.0}), kDt, false);
   EXPECT_EQ(d.guess(), est::VehicleGuess::Undecided);
   EXPECT_EQ(d.moving_s(), 0.0);
 }
@@ -112,20 +156,24 @@ TEST(VehicleDetector, StraightOrSlowOrUnaidedMotionIsNoEvidence) {
 TEST(VehicleDetector, AnEarlyMisfitIsForgottenAndAFailedConstraintRevertsForGood) {
   est::VehicleDetector d;
   d.configure({});
-  // The first minute with a poor heading (1 m/s sideways), then car-like: the
-  // 60-s memory lets the later evidence decide.
+  // The first minute with a poor heading that wanders (1.5 m/s sideways,
+  // one way then the other every 10 s: no mounting makes that), then
+  // car-like: the 60-s memory lets the later evidence decide.
   double t = 0.0;
-  for (; t < 60.0; t += kDt) d.add(state_at(t, 10.0, 1.0, 0.1, 60.0), kDt, true);
+  for (; t < 60.0; t += kDt) {
+    const double lateral = std::fmod(t, 20.0) < 10.0 ? 1.5 : -1.5;
+    d.add(state_at(t, {.speed = 10.0, .lateral_m_s = lateral, .vertical_m_s = 0.1}), kDt, true);
+  }
   EXPECT_EQ(d.guess(), est::VehicleGuess::Undecided);
   for (; t < 300.0 && d.guess() == est::VehicleGuess::Undecided; t += kDt)
-    d.add(state_at(t, 10.0, 0.05, 0.05, 60.0), kDt, true);
+    d.add(state_at(t, {.speed = 10.0, .lateral_m_s = 0.05, .vertical_m_s = 0.05}), kDt, true);
   ASSERT_EQ(d.guess(), est::VehicleGuess::Ground);
   // Then the constraint is rejected in 6 of every 10 updates for 10 s: it does not hold.
   for (int k = 0; k < 120; ++k) d.on_constraint(t + 0.1 * k, k % 10 < 4);
   EXPECT_EQ(d.guess(), est::VehicleGuess::Reverted);
   // And a rejection now and then (1 in 10) leaves a ground vehicle alone.
   d.configure({});
-  for (t = 0.0; t < 120.0; t += kDt) d.add(state_at(t, 10.0, 0.05, 0.05, 60.0), kDt, true);
+  for (t = 0.0; t < 120.0; t += kDt) d.add(state_at(t, {.speed = 10.0, .lateral_m_s = 0.05, .vertical_m_s = 0.05}), kDt, true);
   ASSERT_EQ(d.guess(), est::VehicleGuess::Ground);
   for (int k = 0; k < 300; ++k) d.on_constraint(t + 0.1 * k, k % 10 != 0);
   EXPECT_EQ(d.guess(), est::VehicleGuess::Ground);

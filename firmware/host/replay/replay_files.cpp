@@ -85,9 +85,12 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
                    {"constraints_at_end", v.ground_at_end ? "ground" : "none"},
                    {"detected", detected},
                    {"detected_at_s", v.guess != est::VehicleGuess::Undecided ? json(v.detected_at_s) : json(nullptr)},
-                   {"evidence", {{"moving_s", v.moving_s}, {"body_lateral_rms_m_s", v.lateral_rms_m_s},
-                                 {"body_vertical_rms_m_s", v.vertical_rms_m_s}}},
-                   {"lateral_axis", v.mounted_sideways ? "x (unit mounted sideways)" : "y"}};
+                   {"evidence", {{"moving_s", v.moving_s}, {"lateral_rms_m_s", v.lateral_rms_m_s},
+                                 {"vertical_rms_m_s", v.vertical_rms_m_s}}},
+                   {"unit_on_vehicle", {{"found", v.on_bracket},
+                                        {"roll_deg", v.on_bracket ? json(v.unit_roll_deg) : json(nullptr)},
+                                        {"pitch_deg", v.on_bracket ? json(v.unit_pitch_deg) : json(nullptr)},
+                                        {"yaw_deg", v.on_bracket ? json(v.unit_yaw_deg) : json(nullptr)}}}};
   json eff = json::array();
   for (const EffectEstimate& e : r.effects) {
     eff.push_back({{"name", est::kEffectNames[static_cast<std::size_t>(e.effect)]}, {"estimate", e.estimate}, {"sigma", e.sigma}});

@@ -55,7 +55,8 @@ struct VehicleOutcome {
   est::VehicleGuess guess = est::VehicleGuess::Undecided;
   double detected_at_s = 0.0;       // valid when guess != Undecided
   double lateral_rms_m_s = 0.0, vertical_rms_m_s = 0.0, moving_s = 0.0;  // the detector's evidence
-  bool mounted_sideways = false;    // the lateral axis the detector found is the body's x
+  bool on_bracket = false;          // the detector found the unit turned or tilted on the vehicle:
+  double unit_roll_deg = 0.0, unit_pitch_deg = 0.0, unit_yaw_deg = 0.0;  // its attitude on it (VehicleAxes)
 };
 
 enum class HealthStatus { Ok, Reset, LostAndRecovered, Lost, NotAligned };
