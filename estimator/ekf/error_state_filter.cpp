@@ -119,11 +119,11 @@ void ErrorStateFilter::reanchor_hard_iron(const NavState& nav, const Eigen::Vect
   reset_block(H, Eigen::Vector3d::Constant(std::hypot(sigma_uT, keep)));
 }
 
-void ErrorStateFilter::activate_deferred() {
-  if (!layout_.has_deferred()) return;
+void ErrorStateFilter::activate_deferred(EffectSet which) {
+  if (!layout_.has_deferred(which)) return;
   const Eigen::Index n = layout_.dim;
   const StateLayout before = layout_;
-  layout_.activate_deferred();
+  layout_.activate(which);
   const StateMat old = P_;
   P_ = StateMat::Zero(layout_.dim, layout_.dim);
   P_.topLeftCorner(n, n) = old.topLeftCorner(n, n);
@@ -134,6 +134,19 @@ void ErrorStateFilter::activate_deferred() {
     for (Eigen::Index j = 0; j < s.size; ++j) P_(s.start + j, s.start + j) = sig * sig;
     apply_prior(static_cast<Effect>(i));
   }
+}
+
+void ErrorStateFilter::start_vehicle_mount(double independent_sigma_rad) {
+  if (layout_.has(Effect::VehicleMount)) return;
+  activate_deferred(EffectSet::of({Effect::VehicleMount}));
+  if (!layout_.has(Effect::VehicleMount)) return;
+  // Found = true yaw on the vehicle + the heading's error e; with
+  // C_nb_hat = (I - [phi x]) C_nb, e = -phi_z, and the state (true - found) is phi_z.
+  const Eigen::Index m = layout_.of(Effect::VehicleMount).start, yaw = layout_.att.start + 2;
+  set_effect(Effect::VehicleMount, 0, 0.0);
+  P_.row(m) = P_.row(yaw);
+  P_.col(m) = P_.col(yaw);
+  P_(m, m) = P_(yaw, yaw) + independent_sigma_rad * independent_sigma_rad;
 }
 
 void ErrorStateFilter::build_transition(const PredictInput& in, int ar_steps, StateMat& Phi, StateVec& q) const {

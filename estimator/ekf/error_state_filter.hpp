@@ -114,9 +114,14 @@ class ErrorStateFilter {
   /// correlations cleared.
   void reanchor_hard_iron(const NavState& nav, const Eigen::Vector3d& mag_b_uT, double sigma_uT);
 
-  /// Switches the layout's deferred effects on: P grows by their states, with
-  /// their prior variances and no correlation with the rest.
-  void activate_deferred();
+  /// Switches the layout's deferred effects of `which` on: P grows by their
+  /// states, with their prior variances and no correlation with the rest.
+  void activate_deferred(EffectSet which);
+  /// Switches the reserved vehicle_mount state on, at zero: the bracket's yaw
+  /// was found from the body velocity under the heading of the moment, so its
+  /// error is the heading's (the state equals the attitude error about the
+  /// vertical, fully correlated) plus `independent_sigma_rad` of its own.
+  void start_vehicle_mount(double independent_sigma_rad);
 
   /// Starts the magnetometer model from one sample: F_n = C_nb (m_b - h_b),
   /// with the uncertainty the hard iron and the sample's noise give it (none

@@ -56,18 +56,24 @@ StateLayout StateLayout::make(Eigen::Index order, EffectSet effects, EffectSet d
   return l;
 }
 
-bool StateLayout::has_deferred() const {
-  for (const Slice& s : reserved)
-    if (s.active()) return true;
+bool StateLayout::has_deferred(EffectSet which) const {
+  for (std::size_t i = 0; i < kEffectCount; ++i)
+    if (which.has(static_cast<Effect>(i)) && reserved[i].active()) return true;
   return false;
 }
 
-void StateLayout::activate_deferred() {
+void StateLayout::activate(EffectSet which) {
   for (std::size_t i = 0; i < kEffectCount; ++i) {
-    if (!reserved[i].active()) continue;
-    effect[i] = reserved[i];
-    dim = std::max(dim, reserved[i].start + reserved[i].size);
+    if (!which.has(static_cast<Effect>(i)) || !reserved[i].active()) continue;
+    effect[i] = Slice{dim, reserved[i].size};
+    dim += reserved[i].size;
     reserved[i] = Slice{};
+  }
+  Eigen::Index next = dim;  // the rest, still reserved, after them
+  for (Slice& s : reserved) {
+    if (!s.active()) continue;
+    s.start = next;
+    next += s.size;
   }
 }
 

@@ -21,6 +21,7 @@
 #include <array>
 #include <bitset>
 #include <cstdint>
+#include <initializer_list>
 #include <Eigen/Core>
 
 #include "estimator/ekf/effect_vocabulary.hpp"
@@ -70,12 +71,17 @@ struct EffectSet {
   bool has(Effect e) const { return (bits >> static_cast<unsigned>(e)) & 1u; }
   void add(Effect e) { bits |= 1u << static_cast<unsigned>(e); }
   void remove(Effect e) { bits &= ~(1u << static_cast<unsigned>(e)); }
+  static EffectSet of(std::initializer_list<Effect> effects) {
+    EffectSet s;
+    for (const Effect e : effects) s.add(e);
+    return s;
+  }
 };
 
 /// Where every state lives. Effects can be deferred (PX4 EKF2 reserves its
 /// magnetometer states the same way): their slices are reserved after all
-/// others but stay inactive, outside `dim`, until activate_deferred()
-/// switches them on (the magnetometer's first sample), so nothing has to read
+/// others but stay inactive, outside `dim`, until activate() switches them
+/// on (the magnetometer's first sample; a unit found on a bracket), so nothing has to read
 /// the data ahead to decide the layout and nothing pays for unused states.
 struct StateLayout {
   Slice pos, vel, att;
@@ -91,12 +97,13 @@ struct StateLayout {
   bool has(Effect e) const { return of(e).active(); }
   /// Active, or reserved for activation.
   bool carries(Effect e) const { return has(e) || reserved[static_cast<std::size_t>(e)].active(); }
-  bool has_deferred() const;
-  /// Switches every deferred effect on (they are the last slices: dim grows).
-  void activate_deferred();
+  bool has_deferred(EffectSet which) const;
+  /// Switches the deferred effects of `which` on: they take the next slices
+  /// (dim grows), the rest stay reserved after them.
+  void activate(EffectSet which);
 
   /// order in 1..kMaxArOrder; `deferred` effects (also in `effects` or not)
-  /// are reserved at the end and inactive until activate_deferred().
+  /// are reserved at the end and inactive until activate().
   static StateLayout make(Eigen::Index order, EffectSet effects, EffectSet deferred = {});
 };
 

@@ -31,6 +31,10 @@ StateLayout layout_of(const NavigatorConfig& cfg) {
   } else {
     for (const Effect e : mag) effects.remove(e);
   }
+  if (cfg.vehicle == VehicleKind::Auto) {  // a unit on a bracket: its yaw there (vehicle_detector.hpp)
+    effects.add(Effect::VehicleMount);
+    deferred.add(Effect::VehicleMount);
+  }
   return StateLayout::make(cfg.noise.order(), effects, deferred);
 }
 
@@ -252,7 +256,13 @@ void Navigator::process(const ImuSample& s) {
   if (cfg_.vehicle == VehicleKind::Auto) {
     const bool was_ground = ground_vehicle();
     vehicle_.add(nav_, dt, s.t_s - last_gnss_pos_t_s_ < 1.0);
-    if (ground_vehicle() != was_ground) events_ |= nav_flag::kVehicleChanged;
+    if (ground_vehicle() != was_ground) {
+      events_ |= nav_flag::kVehicleChanged;
+      if (vehicle_.on_bracket()) {
+        predict_.flush(filter_);
+        filter_.start_vehicle_mount(cfg_.vehicle_mount_sigma_rad);
+      }
+    }
   }
   fuse_vehicle_constraints(s, r1);
   update_health(s.t_s, dt);
@@ -621,7 +631,8 @@ void Navigator::fuse_magnetometer(const ImuSample& s) {
   if (!mag_started_) {  // the first field sample switches the reserved states on
     if (!scale_check_.field_plausible(s.mag_b_uT.norm(), alignment_result_.model_field_n_uT.norm())) return;
     predict_.flush(filter_);
-    filter_.activate_deferred();
+    filter_.activate_deferred(EffectSet::of({Effect::MagEarthField, Effect::MagHardIron, Effect::MagSoftIron,
+                                             Effect::MagMisalign}));
     const bool hard_iron_given = filter_.tuning().prior[static_cast<std::size_t>(Effect::MagHardIron)].given;
     if (alignment_result_.model_field_n_uT.allFinite() && !hard_iron_given) {
       // The hard iron from the data: what the reading holds beyond the model's

@@ -93,6 +93,9 @@ struct NavigatorConfig {
   bool fuse_velocity = true;
   VehicleKind vehicle = VehicleKind::Air;
   VehicleDetectorConfig vehicle_detector;  // with VehicleKind::Auto
+  // A bracket's yaw found from the body velocity: its error beyond the
+  // heading's at the moment (which it shares; the evidence is a minute's average)
+  double vehicle_mount_sigma_rad = 0.035;
   NonholonomicConfig nonholonomic;
   double nonholonomic_period_s = 0.1;
   double nonholonomic_min_speed_m_s = 1.0;

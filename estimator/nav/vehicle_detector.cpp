@@ -90,21 +90,17 @@ bool VehicleDetector::found_on_bracket(VehicleAxes& axes) const {
   if (!(bank_per_g < cfg_.max_bank_per_g)) return false;
   axes.lateral_b = lateral;
   axes.vertical_b = vertical;
-  // Square to the vehicle, as a unit on a bracket mostly is: the yaw found
-  // from the body velocity carries the heading's error of the moment (no
-  // magnetometer: 5-6 deg of sigma; the real drive turned 90 deg was found
-  // at 76 deg, 33 s after the course check turned it, and the constraint then
-  // held that heading 14 deg off for the rest of the drive: 11.5 m over the
-  // ten outages), the tilt the solution's tilt error (about 1 deg there).
-  // An angle within `square_yaw_rad` (yaw) or `square_tilt_rad` (pitch,
-  // roll) of a quarter turn is taken as that quarter turn, and the
-  // constraint corrects the solution instead of holding its error.
+  // Level on the vehicle, as a bracket mostly is: the tilt found is the
+  // solution's tilt error of the moment (about 1 deg on the real drive) as
+  // much as the bracket's. A pitch or roll within `square_tilt_rad` of a
+  // quarter turn is taken as that quarter turn. (The yaw found carries the
+  // heading's error; the vehicle_mount state takes that over.)
   const Eigen::Vector3d euler = axes.unit_euler_rad();
   const auto squared = [](double angle_rad, double within_rad) {
     const double quarter = std::numbers::pi / 2.0, square = quarter * std::round(angle_rad / quarter);
     return std::abs(angle_rad - square) < within_rad ? square : angle_rad;
   };
-  const Eigen::Matrix3d C_vb = (Eigen::AngleAxisd(squared(euler.z(), cfg_.square_yaw_rad), Eigen::Vector3d::UnitZ()) *
+  const Eigen::Matrix3d C_vb = (Eigen::AngleAxisd(euler.z(), Eigen::Vector3d::UnitZ()) *
                                 Eigen::AngleAxisd(squared(euler.y(), cfg_.square_tilt_rad), Eigen::Vector3d::UnitY()) *
                                 Eigen::AngleAxisd(squared(euler.x(), cfg_.square_tilt_rad), Eigen::Vector3d::UnitX()))
                                    .toRotationMatrix();

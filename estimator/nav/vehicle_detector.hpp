@@ -50,8 +50,7 @@ struct VehicleDetectorConfig {
   double mounted_lateral_rms_m_s = 1.0;  // a unit on a bracket: across its motion's axis (vehicle_detector.cpp)
   double max_bank_per_g = 0.4;           // a unit on a bracket: the body banks less than this into a turn
   double min_lateral_accel_spread_g = 0.03;  // ... judged only where the turns vary (the real car: 0.08 g RMS)
-  double square_yaw_rad = 0.35;    // a bracket's yaw found within 20 deg of a quarter turn is that turn,
-  double square_tilt_rad = 0.052;  // its pitch and roll within 3 deg (vehicle_detector.cpp)
+  double square_tilt_rad = 0.052;  // a bracket's pitch and roll found within 3 deg of a quarter turn are that turn
   double revert_window_s = 10.0;
 };
 

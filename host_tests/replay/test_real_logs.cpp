@@ -213,6 +213,7 @@ void write_imu_on_bracket(const std::string& from, const std::string& to, double
 }
 void write_imu_turned_90(const std::string& from, const std::string& to) { write_imu_on_bracket(from, to, 0, 0, 90); }
 void write_imu_turned_45(const std::string& from, const std::string& to) { write_imu_on_bracket(from, to, 0, 0, 45); }
+void write_imu_turned_10(const std::string& from, const std::string& to) { write_imu_on_bracket(from, to, 0, 0, 10); }
 void write_imu_pitched_10(const std::string& from, const std::string& to) { write_imu_on_bracket(from, to, 0, 10, 0); }
 
 // Without a magnetometer the heading at the start is the GNSS course, which
@@ -272,7 +273,8 @@ TEST(RealLogs, TheDriveWithItsUnitOnABracketFindsTheCarsAxes) {
     const char* angle;
     double degrees;
   };
-  for (const Case c : {Case{write_imu_turned_45, "yaw_deg", 45.0}, Case{write_imu_pitched_10, "pitch_deg", 10.0}}) {
+  for (const Case c : {Case{write_imu_turned_45, "yaw_deg", 45.0}, Case{write_imu_turned_10, "yaw_deg", 10.0},
+                       Case{write_imu_pitched_10, "pitch_deg", 10.0}}) {
     SCOPED_TRACE(c.angle);
     TempDir dir;
     DrivePair p;

@@ -12,11 +12,9 @@
 // The noise covers sideslip, body roll on springs, a mount not quite found,
 // and the lateral speed a turn gives an IMU ahead of the rear axle (sigma
 // grows with the yaw rate).
-#include <algorithm>
-#include <cmath>
-
 #include "estimator/ekf/error_state_filter.hpp"
 #include "estimator/ekf/measurement_update.hpp"
+#include "estimator/ekf/vehicle_axes.hpp"
 
 namespace sinu::est {
 
@@ -24,21 +22,6 @@ struct NonholonomicConfig {
   double lateral_sigma_m_s = 0.1;
   double vertical_sigma_m_s = 0.1;
   double sigma_per_yaw_rate_m = 1.5;  // [m/s per rad/s]: an IMU 1.5 m from the rear axle
-};
-
-/// The vehicle's lateral (right) and vertical (down) axes in the unit's body frame, unit vectors.
-struct VehicleAxes {
-  Eigen::Vector3d lateral_b = Eigen::Vector3d::UnitY();
-  Eigen::Vector3d vertical_b = Eigen::Vector3d::UnitZ();
-  /// The vehicle's forward axis in the body frame.
-  Eigen::Vector3d forward_b() const { return lateral_b.cross(vertical_b); }
-  /// The unit's roll, pitch and yaw on the vehicle [rad]: ZYX angles of the body w.r.t. the vehicle's
-  /// forward-right-down axes (a unit turned 45 deg right on its bracket: yaw +45 deg).
-  Eigen::Vector3d unit_euler_rad() const {
-    const Eigen::Vector3d f = forward_b();
-    return {std::atan2(vertical_b.y(), vertical_b.z()), -std::asin(std::clamp(vertical_b.x(), -1.0, 1.0)),
-            std::atan2(lateral_b.x(), f.x())};
-  }
 };
 
 Measurement nonholonomic_measurement(const ErrorStateFilter& filter, const NavState& nav,
