@@ -47,7 +47,7 @@ struct VehicleDetectorConfig {
   double min_turn_rad = 1.57;          // heading changes summed (with the same memory) while moving
   double max_vertical_rms_m_s = 0.25;  // body z
   double max_lateral_rms_m_s = 0.5;    // body y: looser, the heading is the least known angle
-  double mounted_lateral_rms_m_s = 1.0;  // a unit on a bracket: across its motion's axis (vehicle_detector.cpp)
+  double mounted_lateral_rms_m_s = 1.5;  // a unit on a bracket: across its motion's axis (vehicle_detector.cpp)
   double max_bank_per_g = 0.4;           // a unit on a bracket: the body banks less than this into a turn
   double min_lateral_accel_spread_g = 0.03;  // ... judged only where the turns vary (the real car: 0.08 g RMS)
   double square_tilt_rad = 0.052;  // a bracket's pitch and roll found within 3 deg of a quarter turn are that turn
