@@ -53,6 +53,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   recovery_.configure(cfg.recovery);
   vertical_.configure(cfg.vertical);
   heading_.configure(cfg.heading);
+  course_hold_.configure(cfg.course_hold);
   vel_noise_started_ = false;
   stillness_.configure(cfg.stillness);
   vehicle_.configure(cfg.vehicle_detector);
@@ -146,7 +147,12 @@ void Navigator::push_filtered(ImuSample s) {
 }
 
 void Navigator::push_gnss(const GnssObservation& z) {
-  if (!gnss_.push(z)) ++counters_.gnss_overflow;
+  GnssObservation in = z;
+  if (in.has_velocity && !in.velocity_from_positions && course_hold_.held(in.v_ne_m_s)) {
+    in.course_held = true;  // a speed, not a velocity: never fused as one (course_hold.hpp)
+    ++counters_.course_held;
+  }
+  if (!gnss_.push(in)) ++counters_.gnss_overflow;
 }
 
 void Navigator::flush() {
@@ -419,13 +425,22 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
       }
       GnssObservation zv = z;
       zv.sigma_vel_m_s = vel_noise_.sigma();
+      if (z.course_held) {
+        // A speed without a direction: the velocity is zero within that
+        // speed (course_hold.hpp); neither the noise learner nor the recovery
+        // takes it for the receiver's velocity.
+        zv.v_ne_m_s.setZero();
+        zv.sigma_vel_m_s = std::hypot(zv.sigma_vel_m_s, z.v_ne_m_s.norm());
+      }
       const bool ok = fuse(AidingSource::GnssVelocity,
                            gnss_velocity_measurement(filter_, nav_, now.angular_rate_b_rad_s, accel_n_,
                                                      velocity_lag_accel(t_meas), dt_back, zv, cfg_.gate_sigma),
                            t_meas);
-      vel_noise_.learn(last_result_, t_meas - last_vel_update_t_s_);
-      last_vel_update_t_s_ = t_meas;
-      recover(recovery_.on_velocity(t_meas, ok, z.v_ne_m_s.norm()), z, dt_back, t_meas);
+      if (!z.course_held) {
+        vel_noise_.learn(last_result_, t_meas - last_vel_update_t_s_);
+        last_vel_update_t_s_ = t_meas;
+        recover(recovery_.on_velocity(t_meas, ok, z.v_ne_m_s.norm()), z, dt_back, t_meas);
+      }
     }
   }
 }
@@ -554,7 +569,7 @@ void Navigator::check_course(const GnssObservation& z, double t_now, double dt_b
   mag_started_ = false;
   filter_.reset_yaw(nav_, turn, sigma);
   // And on the fix, as at the alignment: the solution drifted under the wrong heading.
-  if (z.has_velocity) seed_velocity_on_fix(z, sigma_vd);
+  if (z.has_velocity && !z.course_held) seed_velocity_on_fix(z, sigma_vd);
   if (z.has_position && z.has_height) seed_position_on_fix(z, dt_back);
   alignment_result_.course_turn_rad = turn;
   alignment_result_.course_turn_t_s = t_now;
@@ -582,7 +597,8 @@ void Navigator::recover(RecoveryAction action, const GnssObservation& z, double 
   begin_reset(t_meas);
   const StateLayout& L = filter_.layout();
   const double sigma_vd = std::sqrt(filter_.P()(L.vel.start + 2, L.vel.start + 2));
-  if (action == RecoveryAction::ResetVelocityAndYaw && z.has_velocity) {
+  const bool velocity = z.has_velocity && !z.course_held;  // a held course is no direction (course_hold.hpp)
+  if (action == RecoveryAction::ResetVelocityAndYaw && velocity) {
     // Turn the heading by the angle between the INS's and the receiver's ground tracks.
     const Eigen::Vector2d v_ins = nav_.v_n_m_s.head<2>();
     if (v_ins.norm() > cfg_.recovery.yaw_reset_min_speed_m_s) {
@@ -596,7 +612,7 @@ void Navigator::recover(RecoveryAction action, const GnssObservation& z, double 
       release_gyro_bias_about_vertical();
     }
   }
-  if (z.has_velocity) {
+  if (velocity) {
     seed_velocity_on_fix(z, sigma_vd);
     ++counters_.velocity_resets;
     events_ |= nav_flag::kVelocityReset;

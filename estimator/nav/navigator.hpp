@@ -26,6 +26,7 @@
 #include "estimator/ekf/error_state_filter.hpp"
 #include "estimator/ekf/measurement_update.hpp"
 #include "estimator/ekf/predict_accumulator.hpp"
+#include "estimator/nav/course_hold.hpp"
 #include "estimator/nav/gnss_recovery.hpp"
 #include "estimator/nav/heading_check.hpp"
 #include "estimator/nav/imu_screen.hpp"
@@ -93,6 +94,7 @@ struct NavigatorConfig {
   bool fuse_velocity = true;
   VehicleKind vehicle = VehicleKind::Air;
   VehicleDetectorConfig vehicle_detector;  // with VehicleKind::Auto
+  CourseHoldConfig course_hold;
   // A bracket's yaw found from the body velocity: its error beyond the
   // heading's at the moment (which it shares; the evidence is a minute's average)
   double vehicle_mount_sigma_rad = 0.035;
@@ -301,6 +303,7 @@ class Navigator {
   GnssRecovery recovery_;
   VerticalCheck vertical_;
   HeadingCheck heading_;
+  CourseHold course_hold_;
   // The turn rate the heading check is judged by: the GNSS course's (smoothed
   // over 1 s) while moving, else the INS heading's between field updates.
   double course_rad_ = 0.0, course_t_s_ = -1e300, course_rate_rad_s_ = 0.0;

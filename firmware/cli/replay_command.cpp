@@ -132,6 +132,10 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
     std::printf("  GNSS: %s epoch(s) with a position but no height (their GGA missing or corrupt): %s fused north and "
                 "east only\n",
                 num(r.gnss.without_height).c_str(), num(c.horizontal_fixes).c_str());
+  if (c.course_held > 0)
+    std::printf("  GNSS: %s velocity epoch(s) with the course held by the receiver at low speed (the same course to the "
+                "digit while the speed changes): fused as zero within their speed, not as a velocity\n",
+                num(c.course_held).c_str());
   if (c.imu_clipped_samples > 0 || c.imu_gaps > 0 || c.imu_invalid > 0 || c.imu_non_increasing > 0 || c.gnss_timeouts > 0) {
     std::printf("  faults: IMU clipped %s samples, %s gaps (longest %s s), %s dropped (NaN %s, time %s); GNSS timeouts %s "
                 "(%s s dead reckoning)\n",

@@ -154,12 +154,12 @@ TEST(VehicleDetector, StraightOrSlowOrUnaidedMotionIsNoEvidence) {
 TEST(VehicleDetector, AnEarlyMisfitIsForgottenAndAFailedConstraintRevertsForGood) {
   est::VehicleDetector d;
   d.configure({});
-  // The first minute with a poor heading that wanders (1.5 m/s sideways,
+  // The first minute with a poor heading that wanders (2.5 m/s sideways,
   // one way then the other every 10 s: no mounting makes that), then
   // car-like: the 60-s memory lets the later evidence decide.
   double t = 0.0;
   for (; t < 60.0; t += kDt) {
-    const double lateral = std::fmod(t, 20.0) < 10.0 ? 1.5 : -1.5;
+    const double lateral = std::fmod(t, 20.0) < 10.0 ? 2.5 : -2.5;
     d.add(state_at(t, {.speed = 10.0, .lateral_m_s = lateral, .vertical_m_s = 0.1}), kDt, true);
   }
   EXPECT_EQ(d.guess(), est::VehicleGuess::Undecided);

@@ -17,6 +17,7 @@ struct GnssObservation {
   Eigen::Vector2d v_ne_m_s = Eigen::Vector2d::Zero();
   double sigma_vel_m_s = 0.3;
   bool velocity_from_positions = false;  // not the receiver's: differenced fixes (align/position_velocity.hpp)
+  bool course_held = false;  // the receiver held its course at low speed (nav/course_hold.hpp): a speed, no direction
   double decimal_year = NAN;  // UTC date of the fix when the receiver sent one (RMC, ZDA): the geomagnetic model's epoch
 };
 

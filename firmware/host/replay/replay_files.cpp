@@ -150,6 +150,7 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
                 {"used", r.gnss.used},
                 {"without_height", r.gnss.without_height},
                 {"without_height_fused", c.horizontal_fixes},
+                {"course_held", c.course_held},
                 {"dropped_outage", r.gnss.dropped_outage},
                 {"dropped_period", r.gnss.dropped_period}, {"late", c.gnss_late}, {"overflow", c.gnss_overflow}};
   sj["corrupt_sentences"] = r.source.corrupt_sentences;
