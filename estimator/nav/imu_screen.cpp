@@ -25,6 +25,10 @@ ScreenVerdict ImuScreen::screen(const ImuSample& raw, std::uint8_t& clipped_axes
     repeats_[a] = (have_last_ && v == last_value_[a] && std::abs(v) > flat_above) ? repeats_[a] + 1 : 0;
     last_value_[a] = v;
     const bool at_range = range > 0.0 && std::abs(v) >= cfg_.clip_fraction * range;
+    // A rail is the converter's extreme: a sample beyond it says the flat top
+    // was a live signal repeating a code (a 180-deg/s spin with 2 codes of
+    // noise, on the independent simulator's quadcopter), not a rail.
+    if (std::abs(v) > rail_[a]) rail_[a] = 0.0;
     const bool flat = repeats_[a] + 1 >= cfg_.flat_top_repeats;
     if (flat) rail_[a] = std::abs(v);
     const bool at_rail = rail_[a] > 0.0 && std::abs(v) == rail_[a];

@@ -65,9 +65,10 @@ class ReplayObserver final : public est::NavObserver {
     const std::uint32_t resets = o.flags & (f::kPositionReset | f::kVelocityReset | f::kYawReset);
     if (resets && warnings_ < kMaxWarnings) {
       ++warnings_;
-      std::fprintf(stderr, "sinu replay: warning: t=%.3f s: solution reset to GNSS (%s%s%s)\n", o.nav.t_s,
-                   (resets & f::kPositionReset) ? "position " : "", (resets & f::kVelocityReset) ? "velocity " : "",
-                   (resets & f::kYawReset) ? "yaw" : "");
+      const bool p = resets & f::kPositionReset, v = resets & f::kVelocityReset, y = resets & f::kYawReset;
+      std::fprintf(stderr, "sinu replay: warning: t=%.3f s: solution reset to GNSS (%s%s%s%s%s)\n", o.nav.t_s,
+                   p ? "position" : "", p && (v || y) ? ", " : "", v ? "velocity" : "", v && y ? ", " : "",
+                   y ? "yaw" : "");
     }
     if ((o.flags & f::kCourseTurned) && warnings_ < kMaxWarnings) {
       ++warnings_;
