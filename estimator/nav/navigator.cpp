@@ -677,6 +677,12 @@ void Navigator::fuse_magnetometer(const ImuSample& s) {
         fuse_prior(field_model_measurement(filter_, alignment_result_.model_field_n_uT, cfg_.field_model_sigma_uT,
                                            cfg_.inclination_sigma_rad, 1e9));
       }
+      // The soft iron's common scale is the field's strength again: held at
+      // zero (aiding/field_model), unless a model file gave the soft iron.
+      if (filter_.layout().has(Effect::MagSoftIron) &&
+          !filter_.tuning().prior[static_cast<std::size_t>(Effect::MagSoftIron)].given) {
+        fuse_prior(soft_iron_scale_measurement(filter_, 1e-3, 1e9));
+      }
     }
     mag_started_ = true;
     last_mag_fused_t_s_ = s.t_s;

@@ -30,4 +30,17 @@ Measurement field_model_measurement(const ErrorStateFilter& filter, const Eigen:
   return m;
 }
 
+Measurement soft_iron_scale_measurement(const ErrorStateFilter& filter, double sigma, double gate_sigma) {
+  const StateLayout& L = filter.layout();
+  const Slice& D = L.of(Effect::MagSoftIron);
+  const EffectView v = filter.view(Effect::MagSoftIron);
+  Measurement m;
+  m.gate_sigma = gate_sigma;
+  m.innovation = MeasVec::Constant(1, v.v[0] + v.v[1] + v.v[2]);
+  m.H = MeasJacobian::Zero(1, L.dim);
+  m.H.block(0, D.start, 1, 3).setConstant(-1.0);
+  m.R = MeasMat::Constant(1, 1, sigma * sigma);
+  return m;
+}
+
 }  // namespace sinu::est
