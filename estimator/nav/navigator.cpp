@@ -20,16 +20,19 @@ constexpr double kNever = -1e300;
 
 /// The layout the configuration asks for: the magnetometer's states reserved
 /// (deferred) when it is to be used, dropped when not.
+/// The magnetometer's states: reserved, and switched on by its first field sample.
+constexpr Effect kMagEffects[] = {Effect::MagEarthField, Effect::MagHardIron, Effect::MagSoftIron,
+                                  Effect::MagMisalign};
+
 StateLayout layout_of(const NavigatorConfig& cfg) {
   EffectSet effects = cfg.effects, deferred;
-  const Effect mag[] = {Effect::MagEarthField, Effect::MagHardIron, Effect::MagSoftIron, Effect::MagMisalign};
   if (cfg.use_mag) {
     effects.add(Effect::MagEarthField);  // the 3-axis model needs both (PX4 EKF2 likewise)
     effects.add(Effect::MagHardIron);
-    for (const Effect e : mag)
+    for (const Effect e : kMagEffects)
       if (effects.has(e)) deferred.add(e);
   } else {
-    for (const Effect e : mag) effects.remove(e);
+    for (const Effect e : kMagEffects) effects.remove(e);
   }
   if (cfg.vehicle == VehicleKind::Auto) {  // a unit on a bracket: its yaw there (vehicle_detector.hpp)
     effects.add(Effect::VehicleMount);
@@ -647,8 +650,9 @@ void Navigator::fuse_magnetometer(const ImuSample& s) {
   if (!mag_started_) {  // the first field sample switches the reserved states on
     if (!scale_check_.field_plausible(s.mag_b_uT.norm(), alignment_result_.model_field_n_uT.norm())) return;
     predict_.flush(filter_);
-    filter_.activate_deferred(EffectSet::of({Effect::MagEarthField, Effect::MagHardIron, Effect::MagSoftIron,
-                                             Effect::MagMisalign}));
+    EffectSet mag;
+    for (const Effect e : kMagEffects) mag.add(e);
+    filter_.activate_deferred(mag);
     const bool hard_iron_given = filter_.tuning().prior[static_cast<std::size_t>(Effect::MagHardIron)].given;
     if (alignment_result_.model_field_n_uT.allFinite() && !hard_iron_given) {
       // The hard iron from the data: what the reading holds beyond the model's

@@ -6,13 +6,12 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "estimator/ins/rotation.hpp"
+
 namespace sinu::est {
 
 namespace {
 constexpr double kG = 9.80665;  // [m/s^2]: a lateral acceleration in g (the bank it would need)
-double wrapped(double angle_rad) {
-  return angle_rad - 2.0 * std::numbers::pi * std::round(angle_rad / (2.0 * std::numbers::pi));
-}
 }  // namespace
 
 void VehicleDetector::add(const NavState& nav, double dt_s, bool aided) {
@@ -24,8 +23,8 @@ void VehicleDetector::add(const NavState& nav, double dt_s, bool aided) {
   const bool moving = aided && speed >= cfg_.min_speed_m_s;
   double turn = 0.0, lateral_accel_g = 0.0;
   if (moving && have_yaw_ && dt_s > 0.0) {
-    turn = std::abs(wrapped(yaw - last_yaw_rad_));
-    lateral_accel_g = speed * wrapped(course - last_course_rad_) / dt_s / kG;  // to the right, as a bank
+    turn = std::abs(wrap_pi(yaw - last_yaw_rad_));
+    lateral_accel_g = speed * wrap_pi(course - last_course_rad_) / dt_s / kG;  // to the right, as a bank
   }
   last_yaw_rad_ = yaw;
   last_course_rad_ = course;
@@ -91,14 +90,12 @@ bool VehicleDetector::found_on_bracket(VehicleAxes& axes) const {
   const double bank_per_g =
       (lateral.dot(down_accel_) / weight_s_ - lateral.dot(down_) / weight_s_ * mean_accel) / accel_var;
   if (!(bank_per_g < cfg_.max_bank_per_g)) return false;
-  axes.lateral_b = lateral;
-  axes.vertical_b = vertical;
   // Level on the vehicle, as a bracket mostly is: the tilt found is the
   // solution's tilt error of the moment (about 1 deg on the real drive) as
   // much as the bracket's. A pitch or roll within `square_tilt_rad` of a
   // quarter turn is taken as that quarter turn. (The yaw found carries the
   // heading's error; the vehicle_mount state takes that over.)
-  const Eigen::Vector3d euler = axes.unit_euler_rad();
+  const Eigen::Vector3d euler = VehicleAxes{lateral, vertical}.unit_euler_rad();
   const auto squared = [](double angle_rad, double within_rad) {
     const double quarter = std::numbers::pi / 2.0, square = quarter * std::round(angle_rad / quarter);
     return std::abs(angle_rad - square) < within_rad ? square : angle_rad;
