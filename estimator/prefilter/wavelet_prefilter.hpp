@@ -5,8 +5,11 @@
 // magnetometer and temperature) of the instant they describe, so the INS and
 // the GNSS time line stay consistent (see imu_prefilter.hpp). The
 // magnetometer and temperature are passed through, delayed, not filtered.
+// Details above a channel's thresholds (a few sigma of the unit's noise at
+// that level, from its bench session) are kept: fast motion passes.
 // Storage is inside the object: no heap after make_wavelet_prefilter().
 #include <array>
+#include <limits>
 #include <memory>
 
 #include "estimator/prefilter/imu_prefilter.hpp"
@@ -17,11 +20,29 @@ namespace sinu::est {
 
 inline constexpr std::size_t kPrefilterCapacity = 1024;  // samples held while the denoiser delays them
 
+/// Per channel (ax ay az [m/s^2], gx gy gz [rad/s]) and level (index 0: the
+/// finest): a detail larger than this is kept; infinity drops it (the paper).
+using DetailThresholds = std::array<std::array<double, wavelet::kMaxLevels>, 6>;
+
+inline DetailThresholds drop_every_detail() {
+  DetailThresholds t;
+  for (auto& c : t) c.fill(std::numeric_limits<double>::infinity());
+  return t;
+}
+
 template <class Denoiser>
 class WaveletPrefilter final : public ImuPrefilter {
   static_assert(Denoiser::kDelay < static_cast<int>(kPrefilterCapacity), "denoiser delay exceeds the sample buffer");
 
  public:
+  explicit WaveletPrefilter(const DetailThresholds& keep_above = drop_every_detail()) {
+    for (std::size_t c = 0; c < channel_.size(); ++c) {
+      typename Denoiser::Thresholds t;
+      for (std::size_t j = 0; j < t.size(); ++j) t[j] = keep_above[c][j];
+      channel_[c].keep_details_above(t);
+    }
+  }
+
   int delay_samples() const override { return Denoiser::kDelay; }
 
   bool push(const ImuSample& in, ImuSample& out) override {
@@ -71,6 +92,7 @@ class WaveletPrefilter final : public ImuPrefilter {
 };
 
 /// The wavelet prefilter named at run time (levels 1..wavelet::kMaxLevels).
-std::unique_ptr<ImuPrefilter> make_wavelet_prefilter(wavelet::WaveletKind kind, int levels);
+std::unique_ptr<ImuPrefilter> make_wavelet_prefilter(wavelet::WaveletKind kind, int levels,
+                                                     const DetailThresholds& keep_above = drop_every_detail());
 
 }  // namespace sinu::est

@@ -43,6 +43,34 @@ double bias_walk_from_allan(const nlohmann::json& axis) {
   return K;
 }
 
+// denoiser.detail_sigma.<axis>[level] x denoiser.keep_details_above_sigma.
+bool read_detail_thresholds(const nlohmann::json& d, DenoiserSpec& spec, std::string& key, std::string& why) {
+  if (!d.contains("detail_sigma")) return true;
+  key = "denoiser.keep_details_above_sigma";
+  if (!number_at(d, "keep_details_above_sigma", spec.keep_above_sigma) || !(spec.keep_above_sigma > 0.0)) {
+    why = "missing or not positive (detail_sigma needs it)";
+    return false;
+  }
+  for (std::size_t i = 0; i < kAxisNames.size(); ++i) {
+    key = std::string("denoiser.detail_sigma.") + kAxisNames[i];
+    const nlohmann::json& s = d["detail_sigma"];
+    if (!s.is_object() || !s.contains(kAxisNames[i]) || !s[kAxisNames[i]].is_array() ||
+        s[kAxisNames[i]].size() != static_cast<std::size_t>(spec.levels)) {
+      why = "must be an array of " + std::to_string(spec.levels) + " sigmas, one per level";
+      return false;
+    }
+    for (std::size_t j = 0; j < static_cast<std::size_t>(spec.levels); ++j) {
+      const nlohmann::json& v = s[kAxisNames[i]][j];
+      if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < 0.0) {
+        why = "level " + std::to_string(j + 1) + ": not a finite sigma >= 0";
+        return false;
+      }
+      spec.keep_above[i][j] = spec.keep_above_sigma * v.get<double>();
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 bool parse_denoiser(const std::string& text, DenoiserSpec& out, std::string& error) {
@@ -104,6 +132,8 @@ bool load_calib(const std::string& path, const CalibChoice& choice, est::SensorN
                         denoiser, why)) {
       return fail("denoiser", why);
     }
+    std::string key;
+    if (!read_detail_thresholds(j["denoiser"], denoiser, key, why)) return fail(key, why);
   }
   noise.ar_sample_period_s = 1.0 / rate;
   // The AR models at the rate their Allan deviation fits best (sinu calibrate's

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "estimator/ekf/sensor_noise.hpp"
+#include "estimator/prefilter/wavelet_prefilter.hpp"
 
 namespace sinu::board {
 
@@ -25,9 +26,14 @@ struct DenoiserSpec {
   bool wavelet = false;        // false: none
   std::string name = "none";   // "db4", ...
   int levels = 0;
+  /// calib.json's denoiser.keep_details_above_sigma x detail_sigma: details
+  /// beyond the bench's noise pass (fast motion). Drop all without them.
+  est::DetailThresholds keep_above = est::drop_every_detail();
+  double keep_above_sigma = 0.0;  // 0: every detail dropped (the paper's approximation)
 };
 
-/// "none", "WAVELET:LEVELS" (e.g. "db4:3"); false with `error` otherwise.
+/// "none", "WAVELET:LEVELS" (e.g. "db4:3"): the approximation alone; false
+/// with `error` otherwise.
 bool parse_denoiser(const std::string& text, DenoiserSpec& out, std::string& error);
 
 /// The unit's accelerometer errors known from a multi-position bench

@@ -42,7 +42,8 @@ bool NavUnit::init(const NavUnitConfig& c, est::NavObserver* observer, std::stri
   if (c.denoise != "auto" && !parse_denoiser(c.denoise, denoiser_, error)) return false;
   prefilter_.reset();
   if (denoiser_.wavelet) {
-    prefilter_ = est::make_wavelet_prefilter(*est::wavelet::parse_wavelet(denoiser_.name), denoiser_.levels);
+    prefilter_ = est::make_wavelet_prefilter(*est::wavelet::parse_wavelet(denoiser_.name), denoiser_.levels,
+                                             denoiser_.keep_above);
   }
   // The unit's scale, misalignment and bias from a multi-position calibration:
   // known values, corrected before the denoiser and the filter (no states).

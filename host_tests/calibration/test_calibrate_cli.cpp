@@ -109,6 +109,45 @@ TEST_F(SimulatedSession, AllanTermsSchemaAndFindings) {
   }
 }
 
+// The denoiser's thresholds: the noise in each level's details, so that a
+// flight keeps what is beyond it (fast motion) and drops the rest.
+TEST_F(SimulatedSession, DetailSigmasAreTheWhiteNoiseAndAReplayUsesThem) {
+  const json calib = read_json(dir_->file("calib.json"));
+  const json& d = calib["denoiser"];
+  EXPECT_EQ(d["keep_details_above_sigma"].get<double>(), 4.0);
+  const json hidden = read_json(dir_->file("hidden.json"))["imu_error_model"];
+  const char* axes[] = {"ax", "ay", "az", "gx", "gy", "gz"};
+  for (int i = 0; i < 6; ++i) {
+    const json& h = hidden[axes[i][0] == 'a' ? "accel" : "gyro"];
+    // White noise of density N at 40 Hz is N sqrt(40) per sample, and an
+    // orthonormal wavelet's details carry that sigma at every level. The
+    // finest level sees the white noise alone: within 10 % (the median's
+    // sampling error over 576000 details is 0.2 %; the simulator's
+    // correlated terms live below 1 Hz). Coarser levels may add the
+    // resonator: at least 0.9x.
+    const double white = h["white_noise_density"][static_cast<std::size_t>(i % 3)].get<double>() * std::sqrt(40.0);
+    const json& sigma = d["detail_sigma"][axes[i]];
+    ASSERT_EQ(sigma.size(), 3u) << axes[i];
+    EXPECT_NEAR(sigma[0].get<double>(), white, 0.10 * white) << axes[i];
+    for (const json& s : sigma) EXPECT_GT(s.get<double>(), 0.9 * white) << axes[i];
+  }
+  // A calib.json whose thresholds are malformed is refused, naming the key.
+  json bad = calib;
+  bad["denoiser"]["detail_sigma"]["gz"] = json::array({0.001, 0.001});
+  std::ofstream(dir_->file("bad_calib.json")) << bad.dump();
+  const auto sim = run_sinu({"simulate", "flight", "--out", dir_->file("short"), "--seed", "7", "--duration", "300"});
+  ASSERT_EQ(sim.exit_code, 0);
+  const auto rep = run_sinu({"replay", "--in", dir_->file("short"), "--calib", dir_->file("bad_calib.json"), "--quiet",
+                             "--out", dir_->file("replay_bad")});
+  EXPECT_EQ(rep.exit_code, 1);
+  EXPECT_NE(rep.err.find("denoiser.detail_sigma.gz"), std::string::npos) << rep.err;
+  const auto ok = run_sinu({"replay", "--in", dir_->file("short"), "--calib", dir_->file("calib.json"), "--quiet",
+                            "--out", dir_->file("replay_ok")});
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_NE(read_json(dir_->file("replay_ok") + "/summary.json")["denoiser"].get<std::string>().find("4 sigma"),
+            std::string::npos);
+}
+
 // Issue 14: the AR models also at the rate whose Allan deviation fits the
 // measured one best over 1-100 s (the span of an outage), and the EKF uses them.
 TEST_F(SimulatedSession, ArModelsAtTheRateThatFitsTheAllanDeviationAndTheReplayUsesThem) {

@@ -126,6 +126,11 @@ nlohmann::json calibration_to_json(const CalibrationRun& run) {
                    {"wavelet", run.denoiser.wavelet.empty() ? json(nullptr) : json(run.denoiser.wavelet)},
                    {"levels", run.denoiser.levels},
                    {"sample_rate_hz", first.sample_rate_hz}};
+  if (!first.detail_sigma[0].empty()) {
+    // The flight keeps a detail beyond keep_details_above_sigma of these (fast motion).
+    j["denoiser"]["keep_details_above_sigma"] = kKeepDetailsAboveSigma;
+    for (std::size_t i = 0; i < kImuAxes.size(); ++i) j["denoiser"]["detail_sigma"][kImuAxes[i]] = first.detail_sigma[i];
+  }
   json s0 = session_json(first);
   j["dataset"] = first.dataset;
   j["sample_rate_hz"] = first.sample_rate_hz;

@@ -22,6 +22,7 @@ SessionCalibration calibrate_session(const StaticSession& session, const Denoise
   for (std::size_t i = 0; i < kImuAxes.size(); ++i) {
     denoised[i] = denoiser.apply(session.imu[i], s.sample_rate_hz);
     s.axes[i] = calibrate_axis(kImuAxes[i], session.imu[i], denoised[i], opt);
+    if (denoiser.detail_sigma) s.detail_sigma[i] = denoiser.detail_sigma(session.imu[i]);
     if (on_axis_done) on_axis_done();
   }
   s.model_rate = choose_model_rate(denoised, s.axes, session.dt_s, denoiser.levels);

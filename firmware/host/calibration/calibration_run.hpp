@@ -27,6 +27,7 @@ struct SessionCalibration {
   std::size_t rows = 0, rows_without_imu = 0, gaps = 0;
   std::array<AxisCalibration, 6> axes;
   ModelRate model_rate;  // the AR models at the rate their Allan deviation fits best (model_rate.hpp)
+  std::array<std::vector<double>, 6> detail_sigma;  // per axis, the noise in the denoiser's details per level (none: empty)
   std::array<MagStatistics, 3> mag;
 };
 

@@ -1,6 +1,9 @@
 #include "firmware/host/calibration/denoiser.hpp"
 
+#include <cmath>
+
 #include "estimator/wavelet/denoiser_select.hpp"
+#include "firmware/host/dataset/quantile.hpp"
 
 namespace sinu::calibration {
 
@@ -33,6 +36,21 @@ std::vector<double> denoise_series(std::span<const double> x) {
   return out;
 }
 
+// The details of every level as the streaming denoiser computes them (the same
+// pairing phase), and their robust sigma: median |d| / 0.6745 (Gaussian).
+template <class Filter>
+std::vector<double> detail_sigma_series(std::span<const double> x) {
+  std::vector<std::vector<double>> magnitude(static_cast<std::size_t>(Filter::kLevels));
+  if (x.empty()) return std::vector<double>(magnitude.size(), 0.0);
+  Filter filter(x.front());
+  for (double v : x) {
+    filter.step(v, [&](int level, double d) { magnitude[static_cast<std::size_t>(level - 1)].push_back(std::abs(d)); });
+  }
+  std::vector<double> sigma;
+  for (auto& m : magnitude) sigma.push_back(dataset::quantile(std::move(m), 0.5) / 0.6744897501960817);
+  return sigma;
+}
+
 }  // namespace
 
 bool make_wavelet_denoiser(const std::string& wavelet, int levels, Denoiser& out, std::string& why) {
@@ -52,6 +70,9 @@ bool make_wavelet_denoiser(const std::string& wavelet, int levels, Denoiser& out
   const wv::WaveletKind k = *kind;
   out.apply = [k, levels](std::span<const double> x, double) {
     return wv::with_denoiser(k, levels, [&]<class Filter>() { return denoise_series<Filter>(x); });
+  };
+  out.detail_sigma = [k, levels](std::span<const double> x) {
+    return wv::with_denoiser(k, levels, [&]<class Filter>() { return detail_sigma_series<Filter>(x); });
   };
   return true;
 }

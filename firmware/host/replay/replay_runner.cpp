@@ -1,5 +1,7 @@
 #include "firmware/host/replay/replay_runner.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -186,6 +188,7 @@ void collect(const board::NavUnit& unit, ReplayResult& r) {
   r.states = static_cast<int>(f.layout().dim);
   const board::DenoiserSpec& d = unit.denoiser();
   r.denoiser = d.wavelet ? d.name + ":" + std::to_string(d.levels) : "none";
+  if (d.wavelet && d.keep_above_sigma > 0.0) r.denoiser += fmt::format(", details beyond {:g} sigma kept", d.keep_above_sigma);
   if (nav.filter().noise().kind == est::NoiseModelKind::AutoRegressive)
     r.ar_rate_hz = 1.0 / nav.filter().noise().ar_sample_period_s;
   r.configured_gps_latency_s = unit.configured_gps_latency_s();
