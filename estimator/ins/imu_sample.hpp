@@ -15,6 +15,7 @@ struct ImuSample {
   bool has_mag = false;
   bool has_temp = false;
   std::uint8_t clipped_axes = 0;  // bit a: axis a (ax ay az gx gy gz) at full scale, set by the navigator's screen
+  std::uint8_t clip_reach_axes = 0;  // bit a: a clipped input of axis a within the prefilter's reach of this instant
 };
 
 }  // namespace sinu::est

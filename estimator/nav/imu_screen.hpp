@@ -6,8 +6,9 @@
 // Clipping: an axis is clipped when its magnitude reaches `clip_fraction` of
 // the configured full scale (the driver knows it; a dataset user gives it),
 // or, with the full scale unknown, when it sits flat above `flat_top_*`
-// for `flat_top_repeats` samples in a row: a clipped converter repeats its
-// extreme code exactly, a live signal at several g never does. The value
+// for `flat_top_repeats` samples in a row near one of the full scales MEMS
+// converters come in (imu_screen.cpp): a clipped converter repeats its
+// extreme code exactly, a live signal with noise rarely does. The value
 // found flat is remembered as that axis's rail (either sign): from then on
 // every sample at the rail is clipped, also single ones in a vibration burst.
 #include <array>

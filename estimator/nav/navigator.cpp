@@ -119,7 +119,7 @@ void Navigator::push_imu(const ImuSample& raw) {
   if (s.clipped_axes) {
     ++counters_.imu_clipped_samples;
     // A clipped input reaches every prefilter output up to its delay later.
-    const double reach = raw.t_s + prefilter_->delay_samples() * raw_period_s_ + 1e-9;
+    const double reach = s.t_s + prefilter_->delay_samples() * raw_period_s_ + 1e-9;
     for (std::size_t a = 0; a < kSensorAxes; ++a)
       if ((static_cast<unsigned>(s.clipped_axes) >> a) & 1u) clip_until_t_s_[a] = reach;
   }
@@ -129,7 +129,7 @@ void Navigator::push_imu(const ImuSample& raw) {
 
 void Navigator::push_filtered(ImuSample s) {
   for (std::size_t a = 0; a < kSensorAxes; ++a)
-    if (s.t_s <= clip_until_t_s_[a]) s.clipped_axes |= static_cast<std::uint8_t>(1u << a);
+    if (s.t_s <= clip_until_t_s_[a]) s.clip_reach_axes |= static_cast<std::uint8_t>(1u << a);
   if (!imu_.empty() && !(s.t_s > imu_.back().t_s)) {
     ++counters_.imu_non_increasing;
     events_ |= nav_flag::kImuDropped;
@@ -318,9 +318,14 @@ void Navigator::align(const ImuSample& s, double dt) {
 }
 
 void Navigator::widen_for_faults(const ImuSample& s, double dt) {
-  const std::uint8_t clipped = s.clipped_axes | prev_.clipped_axes;  // the interval touches a clipped sample
+  // The interval touches a sample at full scale: its unknown error grows the
+  // covariance. Samples the prefilter mixed a clipped input into carry it
+  // smeared, not more of it (the wavelet's gain is 1): they only freeze the
+  // biases and raise the flag.
+  const std::uint8_t clipped = s.clipped_axes | prev_.clipped_axes;
+  const std::uint8_t touched = clipped | s.clip_reach_axes | prev_.clip_reach_axes;
   const bool gap = dt > cfg_.gap_periods * period_s_;
-  if (clipped || gap) predict_.flush(filter_);  // the extra noise belongs after this interval
+  if (touched || gap) predict_.flush(filter_);  // the extra noise belongs after this interval
   const Eigen::Matrix3d C = nav_.C_nb();
   Eigen::Vector3d var_f = Eigen::Vector3d::Zero(), var_w = Eigen::Vector3d::Zero();
   frozen_.reset();
@@ -336,10 +341,10 @@ void Navigator::widen_for_faults(const ImuSample& s, double dt) {
       const double sigma = cfg_.clip_error_fraction * std::max(range, v);
       const double k = static_cast<double>(clip_run_[a]++);
       (accel ? var_f : var_w)(i) += sigma * sigma * (2.0 * k + 1.0) * dt * dt;
-      last_clip_t_s_[a] = s.t_s;
     } else {
       clip_run_[a] = 0;
     }
+    if ((static_cast<unsigned>(touched) >> a) & 1u) last_clip_t_s_[a] = s.t_s;
     if (s.t_s - last_clip_t_s_[a] < cfg_.clip_hold_s) filter_.add_axis_states(static_cast<Eigen::Index>(a), frozen_);
   }
   if (gap) {  // the motion inside the gap is unknown beyond the straight line through its ends
