@@ -353,6 +353,9 @@ void Navigator::widen_for_faults(const ImuSample& s, double dt) {
     var_f.array() += sa * sa * dt * dt;
     var_w.array() += sw * sw * dt * dt;
   }
+  // The gyro's scale factor, in no state unless gyro_scale is carried (navigator.hpp).
+  if (!filter_.layout().has(Effect::GyroScale))
+    var_w += (cfg_.gyro_scale_noise_rt_s * s.angular_rate_b_rad_s).cwiseAbs2() * dt;
   if (var_f.any()) filter_.add_block_noise(filter_.layout().vel, C * var_f.asDiagonal() * C.transpose());
   if (var_w.any()) filter_.add_block_noise(filter_.layout().att, C * var_w.asDiagonal() * C.transpose());
 }
