@@ -7,8 +7,9 @@
 // the configured full scale (the driver knows it; a dataset user gives it),
 // or, with the full scale unknown, when it sits flat above `flat_top_*`
 // for `flat_top_repeats` samples in a row near one of the full scales MEMS
-// converters come in (imu_screen.cpp): a clipped converter repeats its
-// extreme code exactly, a live signal with noise rarely does. The value
+// converters come in (imu_screen.cpp), `flat_top_repeats_anywhere` elsewhere:
+// a clipped converter repeats its extreme code exactly, a live signal with
+// noise rarely does, and seldom for long. The value
 // found flat is remembered as that axis's rail (either sign): from then on
 // every sample at the rail is clipped, also single ones in a vibration burst.
 #include <array>
@@ -24,7 +25,8 @@ struct ImuScreenConfig {
   double clip_fraction = 0.98;
   double flat_top_accel_m_s2 = 14.7;  // 1.5 g
   double flat_top_rate_rad_s = 3.0;
-  int flat_top_repeats = 3;
+  int flat_top_repeats = 3;           // near a common full scale (imu_screen.cpp)
+  int flat_top_repeats_anywhere = 10;  // elsewhere (a +-5-g or +-300-deg/s part)
 };
 
 enum class ScreenVerdict { Keep, NonFinite, NotIncreasing };

@@ -89,6 +89,17 @@ TEST(ImuScreen, AnAccelerometerPeggedAtFourGIsClippedAndAConfiguredRangeIsUsed) 
   EXPECT_EQ(axes, 1u << 5);
 }
 
+TEST(ImuScreen, AnUnusualFullScaleNeedsALongerFlatTop) {
+  // A +-5-g part (between the common 4 and 6 g): ten equal codes, not three.
+  ImuScreen screen;
+  screen.configure(ImuScreenConfig{});
+  std::uint8_t axes = 0;
+  for (int n = 0; n < 20; ++n) {
+    screen.screen(sample(0.01 * n, 0.0, -5.0 * 9.80665), axes);
+    EXPECT_EQ(axes != 0, n >= 9) << n;
+  }
+}
+
 TEST(ImuScreen, NonFiniteAndNonIncreasingSamplesAreDropped) {
   ImuScreen screen;
   screen.configure(ImuScreenConfig{});
