@@ -9,8 +9,8 @@ namespace sinu::est {
 
 namespace {
 
-/// What an effect's nonholonomic() hook sees and writes (effects/*.hpp): it
-/// may turn the axes (before the rows are built from them) and writes its columns.
+/// What an effect's nonholonomic() hook sees and writes (effects/*.hpp): the
+/// axes in use, and its columns.
 struct NonholonomicTerms {
   VehicleAxes axes;
   const Eigen::Vector3d& v_b;
@@ -19,6 +19,16 @@ struct NonholonomicTerms {
 };
 
 }  // namespace
+
+VehicleAxes vehicle_axes_in_use(const ErrorStateFilter& filter, const VehicleAxes& found) {
+  VehicleAxes axes = found;
+  for_each_effect([&]<class E>() {
+    if constexpr (requires { E::turn_vehicle_axes(filter.view(E::spec.effect), axes); }) {
+      E::turn_vehicle_axes(filter.view(E::spec.effect), axes);
+    }
+  });
+  return axes;
+}
 
 Measurement nonholonomic_measurement(const ErrorStateFilter& filter, const NavState& nav,
                                      const Eigen::Vector3d& w_b, const NonholonomicConfig& cfg, double gate_sigma,
@@ -30,7 +40,7 @@ Measurement nonholonomic_measurement(const ErrorStateFilter& filter, const NavSt
   Measurement m;
   m.gate_sigma = gate_sigma;
   m.H = MeasJacobian::Zero(2, L.dim);
-  NonholonomicTerms t{found, v_b, m.H, {}};
+  NonholonomicTerms t{vehicle_axes_in_use(filter, found), v_b, m.H, {}};
   for_each_effect([&]<class E>() {
     if constexpr (requires { E::nonholonomic(filter.view(E::spec.effect), t); }) {
       t.slice = L.of(E::spec.effect);

@@ -24,6 +24,10 @@ struct NonholonomicConfig {
   double sigma_per_yaw_rate_m = 1.5;  // [m/s per rad/s]: an IMU 1.5 m from the rear axle
 };
 
+/// The vehicle's axes the constraint uses: the detector's (`found`) turned by
+/// the effects that turn them (vehicle_mount: the bracket's yaw estimate).
+VehicleAxes vehicle_axes_in_use(const ErrorStateFilter& filter, const VehicleAxes& found);
+
 Measurement nonholonomic_measurement(const ErrorStateFilter& filter, const NavState& nav,
                                      const Eigen::Vector3d& angular_rate_b_rad_s, const NonholonomicConfig& cfg,
                                      double gate_sigma, const VehicleAxes& axes = {});
