@@ -197,7 +197,7 @@ void Navigator::process(const ImuSample& s) {
   // Across a gap the last sample before it is held: a straight line to the
   // first sample after it would spread that one sample's noise or transient
   // over the whole gap (a real log: one -3.7 m/s^2 sample after a 2-s gap
-  // made 5 m/s of vertical velocity). The unknown motion is noise (widen_for_faults).
+  // made 5 m/s of vertical velocity). The unknown motion is noise (widen_for_imu_errors).
   const BodyRates& r_end = gap ? r0 : r1;
   Eigen::Vector3d f_n;
   const Eigen::Vector3d v_before = nav_.v_n_m_s;
@@ -233,7 +233,7 @@ void Navigator::process(const ImuSample& s) {
   }
   predict_.add(in);
   if (predict_.pending_s() >= cfg_.covariance_period_s - 1e-9) predict_.flush(filter_);
-  widen_for_faults(s, dt);
+  widen_for_imu_errors(s, dt);
   const double a = std::min(1.0, dt / 1.0);
   horizontal_accel_m_s2_ += a * (f_n.head<2>().norm() - horizontal_accel_m_s2_);
   const Eigen::Index yaw = filter_.layout().att.start + 2;
@@ -317,7 +317,7 @@ void Navigator::align(const ImuSample& s, double dt) {
   }
 }
 
-void Navigator::widen_for_faults(const ImuSample& s, double dt) {
+void Navigator::widen_for_imu_errors(const ImuSample& s, double dt) {
   // The interval touches a sample at full scale: its unknown error grows the
   // covariance. Samples the prefilter mixed a clipped input into carry it
   // smeared, not more of it (the wavelet's gain is 1): they only freeze the

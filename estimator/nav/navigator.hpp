@@ -254,7 +254,8 @@ class Navigator {
   void push_filtered(ImuSample s);
   void process(const ImuSample& s);
   void align(const ImuSample& s, double dt);
-  void widen_for_faults(const ImuSample& s, double dt);
+  /// Process noise for what the IMU model leaves out: clipping, gaps, the gyro scale.
+  void widen_for_imu_errors(const ImuSample& s, double dt);
   void fuse_due_gnss(double t_now, double dt, const BodyRates& now);
   void fuse_magnetometer(const ImuSample& s);
   void fuse_vehicle_constraints(const ImuSample& s, const BodyRates& now);

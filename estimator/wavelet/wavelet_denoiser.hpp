@@ -69,7 +69,6 @@ class WaveletDenoiser {
   explicit WaveletDenoiser(double initial = 0.0) { reset(initial); }
 
   void keep_details_above(const Thresholds& t) { keep_above_ = t; }
-  const Thresholds& thresholds() const { return keep_above_; }
 
   /// Forgets the past and primes every register as if the input had been
   /// `initial` forever (no start-up ramp from zero). The priming length is a
