@@ -119,6 +119,19 @@ void ErrorStateFilter::reanchor_hard_iron(const NavState& nav, const Eigen::Vect
   reset_block(H, Eigen::Vector3d::Constant(std::hypot(sigma_uT, keep)));
 }
 
+Eigen::Vector3d ErrorStateFilter::mag_field_b_uT(const Eigen::Vector3d& mag_b_uT) const {
+  if (layout_.has(Effect::MagHardIron)) return mag_axes().inverse() * (mag_b_uT - mag_hard_iron_b_uT());
+  std::array<double, kMaxEffectStates> known = value_;  // the deferred states at their given priors
+  const auto at = [&](Effect e) { return known.data() + kEffectValueOffset[static_cast<std::size_t>(e)]; };
+  for (const Effect e : {Effect::MagHardIron, Effect::MagSoftIron, Effect::MagMisalign}) {
+    const EffectPrior& p = tuning_.prior[static_cast<std::size_t>(e)];
+    if (p.given) std::copy_n(p.value.begin(), kEffectDims[static_cast<std::size_t>(e)], at(e));
+  }
+  const Eigen::Matrix3d A = EffectView{at(Effect::MagSoftIron)}.identity_plus_symmetric() *
+                            misalignment_of(EffectView{at(Effect::MagMisalign)});
+  return A.inverse() * (mag_b_uT - EffectView{at(Effect::MagHardIron)}.vec3());
+}
+
 void ErrorStateFilter::activate_deferred(EffectSet which) {
   if (!layout_.has_deferred(which)) return;
   const Eigen::Index n = layout_.dim;

@@ -101,11 +101,14 @@ class ErrorStateFilter {
   /// Soft-iron matrix I + D (identity without the mag_soft_iron states).
   Eigen::Matrix3d mag_soft_iron() const { return view(Effect::MagSoftIron).identity_plus_symmetric(); }
   /// The magnetometer's axes against the body, I - [theta x] (identity without mag_misalign).
-  Eigen::Matrix3d mag_misalignment() const {
-    return Eigen::Matrix3d::Identity() - skew(view(Effect::MagMisalign).vec3());
-  }
+  Eigen::Matrix3d mag_misalignment() const { return misalignment_of(view(Effect::MagMisalign)); }
   /// The Earth field in the body -> the magnetometer's reading before the hard iron: S (I - [theta x]).
   Eigen::Matrix3d mag_axes() const { return mag_soft_iron() * mag_misalignment(); }
+  /// The body-frame field a reading implies, A^-1 (m - h), with the
+  /// magnetometer model known so far: its states once they run, before that
+  /// the priors a model file gave them (a hard iron found on an earlier
+  /// flight); the reading itself when nothing is known.
+  Eigen::Vector3d mag_field_b_uT(const Eigen::Vector3d& mag_b_uT) const;
   const EffectTuning& tuning() const { return tuning_; }
   const SensorNoise& noise() const { return noise_; }
 
@@ -183,6 +186,7 @@ class ErrorStateFilter {
   /// The largest coloured-error variance of a triad (its first sensor axis).
   double coloured_variance(Eigen::Index first_axis) const;
   double* values(Effect e) { return value_.data() + kEffectValueOffset[static_cast<std::size_t>(e)]; }
+  static Eigen::Matrix3d misalignment_of(EffectView theta) { return Eigen::Matrix3d::Identity() - skew(theta.vec3()); }
   struct FeedbackTerms;  // what an effect's feedback may use (error_state_filter.cpp)
   Eigen::Index hat_index(Eigen::Index axis) const { return axis * layout_.order; }
   /// P <- G P G^T for a 3-state block: a reset Jacobian.

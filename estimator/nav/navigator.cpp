@@ -282,7 +282,9 @@ void Navigator::process(const ImuSample& s) {
 
 void Navigator::align(const ImuSample& s, double dt) {
   if (scale_check_.refused()) return;  // the data's units are wrong throughout
-  alignment_.add_imu(s, dt);
+  ImuSample corrected = s;  // the heading from the field the known magnetometer model implies
+  if (s.has_mag) corrected.mag_b_uT = filter_.mag_field_b_uT(s.mag_b_uT);
+  alignment_.add_imu(corrected, dt);
   scale_check_.add_sample(s.specific_force_b_m_s2, s.angular_rate_b_rad_s, dt);
   AlignmentResult res;
   const double latency = filter_.gps_latency_s();
