@@ -148,6 +148,10 @@ class CoarseAlignment {
   /// until end_course_check() or course_check_s after the alignment.
   bool check_course(const GnssObservation& z, double t_now_s, double& yaw_rad, double& sigma_rad);
   bool checking_course() const { return course_check_until_s_ > 0.0; }
+  /// The last field check against the model (NaN before any): the strength
+  /// ratio and the dip difference [rad], also when they refused the field.
+  double field_ratio() const { return field_ratio_; }
+  double dip_difference_rad() const { return dip_difference_rad_; }
   void end_course_check() { course_check_until_s_ = -1.0; }
 
  private:

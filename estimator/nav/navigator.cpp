@@ -317,6 +317,9 @@ void Navigator::align(const ImuSample& s, double dt) {
     if (alignment_.checking_course()) filter_at_alignment_ = filter_;
     return;
   }
+  // Not aligned yet: why the field gave no heading, should it stay so.
+  alignment_result_.field_ratio = alignment_.field_ratio();
+  alignment_result_.dip_difference_rad = alignment_.dip_difference_rad();
 }
 
 void Navigator::widen_for_imu_errors(const ImuSample& s, double dt) {

@@ -110,6 +110,11 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
                        {"dip_minus_model_deg", num(a.dip_difference_rad * kDeg)},
                        {"course_turned_deg", num(a.course_turn_rad * kDeg)},
                        {"course_turned_at_s", num(a.course_turn_t_s)}};
+  } else {
+    // Why there is no solution, and the field check that refused the magnetometer's heading (null: none).
+    sj["not_aligned"] = {{"reason", r.not_aligned_reason()},
+                         {"field_over_model", num(r.alignment.field_ratio)},
+                         {"dip_minus_model_deg", num(r.alignment.dip_difference_rad * 180.0 / std::numbers::pi)}};
   }
   // The units check (estimator/nav/sensor_scale_check.hpp): null where nothing was judged.
   sj["sensor_units"] = {{"specific_force_over_gravity", num(r.scale.specific_force_over_gravity)},

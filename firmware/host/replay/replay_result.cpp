@@ -72,6 +72,14 @@ std::string ReplayResult::not_aligned_reason() const {
   // Fixes without a height are fused once aligned, but the INS starts from a 3-D fix.
   if (gnss.without_height > 0 && gnss.without_height >= gnss.used)
     return "the GNSS fixes have no height: RMC or GLL without a GGA sentence";
+  if (gnss.used > 0 && std::isfinite(alignment.field_ratio)) {
+    return fmt::format("no heading to start from: the GNSS never showed the unit moving, and the magnetometer's field "
+                       "is not the Earth's as the World Magnetic Model has it here ({:.2f}x its strength, dip {:+.1f} "
+                       "deg off: an uncalibrated hard or soft iron), so it gives none. --mag-declination DEG takes "
+                       "the heading from the field as it is; a model file with the unit's hard iron (sinu diagnose "
+                       "--apply on an earlier flight, --model-file) corrects it",
+                       alignment.field_ratio, alignment.dip_difference_rad * 180.0 / std::numbers::pi);
+  }
   if (gnss.used > 0) return "no rest period and no GNSS motion to align on";
   if (source.fixes_after_imu > 0 && gnss.epochs == 0) {
     return fmt::format("gps.nmea's {} fixes all arrive after imu.csv's last sample (the first at t={:.7g} s, imu.csv "
