@@ -116,11 +116,8 @@ TEST(AirStart, TheRealDriveStartedWhileDrivingAlignsAndDeadReckonsItsOutages) {
 // (an independent simulator's quadcopter cut to its last 100 s of hover).
 TEST(NoHeading, AFieldTheModelDoesNotKnowAndNoMotionIsToldWithTheWayOut) {
   TempDir dir;
-  const std::string flight = dir.file("flight"), still = dir.file("still"), effects = dir.file("e.json");
-  std::ofstream(effects) << R"({"mag_hard_iron": [4.0, -4.0, 2.0]})";
-  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", flight, "--seed", "4", "--duration", "300", "--effects", effects})
-                .exit_code,
-            0);
+  const std::string flight = dir.file("flight"), still = dir.file("still");
+  ASSERT_EQ(simulate_flight_with(flight, 4, 300, R"({"mag_hard_iron": [4.0, -4.0, 2.0]})"), 0);
   // The fixes end 40 s in, while the unit still stands before take-off.
   const double t0 = dataset_times(flight).imu.first_s;
   inject_faults(flight, still, {GnssOutage{t0 + 40.0, 1000.0}});

@@ -15,6 +15,7 @@
 #include "host_tests/support/alloc_counter.hpp"
 #include "host_tests/support/nav_error.hpp"
 #include "host_tests/support/read_json.hpp"
+#include "host_tests/support/replay_helpers.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/temp_dir.hpp"
 
@@ -156,9 +157,8 @@ TEST(Replay, MagnetometerHeadingAtRestWithAndWithoutTheDeclination) {
 
 TEST(Replay, MagnetometerHardIronIsEstimatedAndHeadingStaysRight) {
   TempDir dir;
-  const std::string ds = (dir.path() / "f").string(), effects = (dir.path() / "e.json").string();
-  std::ofstream(effects) << R"({"mag_hard_iron": [15.0, -10.0, 8.0]})";
-  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", ds, "--seed", "4", "--duration", "600", "--effects", effects}).exit_code, 0);
+  const std::string ds = (dir.path() / "f").string();
+  ASSERT_EQ(simulate_flight_with(ds, 4, 600, R"({"mag_hard_iron": [15.0, -10.0, 8.0]})"), 0);
   const std::string out = (dir.path() / "out").string();
   ASSERT_EQ(run_sinu({"replay", "--in", ds, "--model", "gm", "--effects", "accel_bias,gyro_bias", "--gps-latency", "0.045",
                       "--quiet", "--out", out}).exit_code, 0);
@@ -203,10 +203,9 @@ TEST(Replay, MagnetometerHardIronIsEstimatedAndHeadingStaysRight) {
 // iron the attitude error was 1.4 deg, 111 field samples rejected).
 TEST(Replay, ALargeHardIronIsTakenFromTheFirstFieldSample) {
   TempDir dir;
-  const std::string ds = (dir.path() / "f").string(), effects = (dir.path() / "e.json").string();
+  const std::string ds = (dir.path() / "f").string();
   const double truth[3] = {-26.5, 18.3, -29.5};
-  std::ofstream(effects) << R"({"mag_hard_iron": [-26.5, 18.3, -29.5]})";
-  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", ds, "--seed", "4", "--duration", "600", "--effects", effects}).exit_code, 0);
+  ASSERT_EQ(simulate_flight_with(ds, 4, 600, R"({"mag_hard_iron": [-26.5, 18.3, -29.5]})"), 0);
   const std::string out = (dir.path() / "out").string();
   ASSERT_EQ(run_sinu({"replay", "--in", ds, "--quiet", "--out", out}).exit_code, 0);
   // The first nav.csv row with the magnetometer's states, and one a minute later.
@@ -250,11 +249,8 @@ TEST(Replay, ALargeHardIronIsTakenFromTheFirstFieldSample) {
 // quadcopter flight; 0.46 deg read through the model).
 TEST(Replay, AModelFilesHardIronGivesTheHeadingAtRest) {
   TempDir dir;
-  const std::string ds = dir.file("f"), effects = dir.file("e.json"), model = dir.file("model.json");
-  std::ofstream(effects) << R"({"mag_hard_iron": [4.0, -4.0, 2.0]})";
-  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", ds, "--seed", "4", "--duration", "300", "--effects", effects})
-                .exit_code,
-            0);
+  const std::string ds = dir.file("f"), model = dir.file("model.json");
+  ASSERT_EQ(simulate_flight_with(ds, 4, 300, R"({"mag_hard_iron": [4.0, -4.0, 2.0]})"), 0);
   std::ofstream(model) << R"({"effects": {"mag_hard_iron": {"estimate": [4.0, -4.0, 2.0], "sigma": [0.3, 0.3, 0.3]}}})";
   const std::string plain = dir.file("plain"), known = dir.file("known");
   ASSERT_EQ(run_sinu({"replay", "--in", ds, "--quiet", "--out", plain}).exit_code, 0);

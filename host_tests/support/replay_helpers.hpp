@@ -20,6 +20,16 @@
 
 namespace sinu::test {
 
+/// `sinu simulate flight` into `out` with the effects JSON `effects_json`
+/// (written next to it); the exit code.
+inline int simulate_flight_with(const std::string& out, int seed, int seconds, const std::string& effects_json) {
+  const std::string effects = out + "_effects.json";
+  std::ofstream(effects) << effects_json;
+  return run_sinu({"simulate", "flight", "--out", out, "--seed", std::to_string(seed), "--duration",
+                   std::to_string(seconds), "--effects", effects})
+      .exit_code;
+}
+
 /// Creates `dst` and copies every file of dataset `src` into it but `skip`,
 /// which the caller writes edited.
 inline void copy_dataset_except(const std::string& src, const std::string& dst, const std::string& skip) {
