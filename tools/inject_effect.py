@@ -10,7 +10,8 @@ effects.json is the simulator's effects object (docs: firmware/host/sim/effects.
 recorded measurements as the simulator applies it to the true ones:
   accel: a' = (I + diag(s)) (I + M) a + k (T - 25 degC)
   gyro:  w' = (I + diag(s)) (I + M) w + G a + k (T - 25 degC)
-  mag:   m' = S R m + b        (S the soft iron, R = exp(-[theta x]) the misalignment, b the hard iron)
+  mag:   m' = S R m + b + k (-a_z - g0)   (S the soft iron, R = exp(-[theta x]) the misalignment,
+                               b the hard iron, k the motors' field against the thrust)
   lever_arm l:    every fix moves to the antenna: p + C_nb l, v + C_nb (w x l)
   gps_latency dt: every sentence arrives dt later (its UTC still the fix's instant,
                   as the dataset contract says; a real receiver's latency)
@@ -33,6 +34,7 @@ import shutil
 import numpy as np
 
 TEMP_REFERENCE_DEGC = 25.0
+STANDARD_GRAVITY = 9.80665  # g0 [m/s^2]: the motors' field is against the thrust beyond it
 WGS84_A, WGS84_E2 = 6378137.0, 6.69437999014e-3
 
 
@@ -71,6 +73,7 @@ def imu_transform(fx):
     gyr_k = np.array(fx.get("gyro_temp_bias", [0, 0, 0]), dtype=float)
     soft = matrix(fx.get("mag_soft_iron", np.eye(3))) @ mag_axes(np.array(fx.get("mag_misalign", [0, 0, 0]), float))
     hard = np.array(fx.get("mag_hard_iron", [0, 0, 0]), dtype=float)
+    motor = np.array(fx.get("mag_motor_interference", [0, 0, 0]), dtype=float)
     needs_temp = bool(acc_k.any() or gyr_k.any())
 
     def apply(a, w, m, temp):
@@ -83,7 +86,9 @@ def imu_transform(fx):
         if w is not None:
             w2 = gyr @ w + (g_sens @ a if a is not None else 0.0) + (gyr_k * dT if needs_temp else 0.0)
         if m is not None:
-            m2 = soft @ m + hard
+            if motor.any() and a is None:
+                raise SystemExit("inject_effect: mag_motor_interference needs the accelerometer on every field row")
+            m2 = soft @ m + hard + (motor * (-a[2] - STANDARD_GRAVITY) if motor.any() else 0.0)
         return a2, w2, m2
 
     return apply
@@ -320,7 +325,7 @@ def main():
     fx = fx.get("effects", fx)
     known = {"accel_scale", "gyro_scale", "accel_misalign", "gyro_misalign", "gyro_g_sensitivity", "accel_temp_bias",
              "gyro_temp_bias", "mag_soft_iron", "mag_hard_iron", "mag_misalign", "lever_arm", "gps_latency",
-             "gps_velocity_latency"}
+             "gps_velocity_latency", "mag_motor_interference"}
     unknown = set(fx) - known
     if unknown:
         raise SystemExit(f"inject_effect: {a.effects}: unknown effect(s) {', '.join(sorted(unknown))}")

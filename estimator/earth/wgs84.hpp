@@ -16,6 +16,7 @@ inline constexpr double kOmegaIe = 7.2921151467e-5;     // Earth rotation rate [
 inline constexpr double kGM = 3.986004418e14;           // gravitational constant [m^3/s^2]
 inline constexpr double kGammaEquator = 9.7803253359;   // normal gravity at the equator [m/s^2]
 inline constexpr double kSomiglianaK = 0.00193185265241;  // Somigliana's constant
+inline constexpr double kStandardGravity = 9.80665;     // g0, the unit "g" (CGPM 1901) [m/s^2]
 
 /// A longitude [rad] in [-pi, pi]: the antimeridian is no edge of the map.
 inline double wrap_lon_rad(double lon_rad) { return std::remainder(lon_rad, 2.0 * std::numbers::pi); }

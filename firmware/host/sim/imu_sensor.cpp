@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "estimator/earth/wgs84.hpp"
+
 namespace sinu::sim {
 
 namespace {
@@ -60,6 +62,7 @@ ImuSensor::ImuSensor(const ImuErrorModel& model, const Effects& fx, const Eigen:
   accel_temp_k_ = e.accel_temp_per_degC;
   gyro_temp_k_ = e.gyro_temp_per_degC;
   hard_iron_ = e.mag_hard_iron_uT;
+  motor_field_ = e.mag_motor_uT_per_m_s2;
   earth_field_n_uT_ = earth_field_n_uT;
 }
 
@@ -70,7 +73,8 @@ ImuOutput ImuSensor::sample(const Eigen::Vector3d& f_b, const Eigen::Vector3d& w
   out.specific_force_b_m_s2 = accel_.measure(accel_gain_ * f_b + accel_.step(rng_) + accel_temp_k_ * dT);
   out.angular_rate_b_rad_s =
       gyro_.measure(gyro_gain_ * w_b + g_sensitivity_ * f_b + gyro_.step(rng_) + gyro_temp_k_ * dT);
-  const Eigen::Vector3d m = mag_axes_ * (C_nb.transpose() * earth_field_n_uT_) + hard_iron_;
+  const Eigen::Vector3d m = mag_axes_ * (C_nb.transpose() * earth_field_n_uT_) + hard_iron_ +
+                            motor_field_ * (-f_b.z() - est::wgs84::kStandardGravity);
   const double mag_sigma = model_.mag.white_noise_sigma_uT, mag_q = model_.mag.quantisation_step_uT;
   for (Eigen::Index i = 0; i < 3; ++i) out.mag_b_uT[i] = quantise(m[i] + mag_sigma * rng_.normal(), mag_q);
   out.temp_degC =

@@ -19,7 +19,10 @@
 namespace sinu::est {
 
 /// Needs the mag_earth_field states (Effect::MagEarthField) in the layout.
+/// `specific_force_b_m_s2`: the IMU's, compensated, at the sample (the
+/// motors' field follows the thrust: effects/mag_motor_interference.hpp).
 Measurement magnetometer_measurement(const ErrorStateFilter& filter, const NavState& nav,
-                                     const Eigen::Vector3d& mag_b_uT, double sigma_uT, double gate_sigma);
+                                     const Eigen::Vector3d& mag_b_uT, const Eigen::Vector3d& specific_force_b_m_s2,
+                                     double sigma_uT, double gate_sigma);
 
 }  // namespace sinu::est

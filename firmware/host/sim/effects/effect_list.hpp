@@ -19,6 +19,7 @@
 #include "firmware/host/sim/effects/lever_arm.hpp"
 #include "firmware/host/sim/effects/mag_hard_iron.hpp"
 #include "firmware/host/sim/effects/mag_misalign.hpp"
+#include "firmware/host/sim/effects/mag_motor_interference.hpp"
 #include "firmware/host/sim/effects/mag_soft_iron.hpp"
 
 namespace sinu::sim {
@@ -36,7 +37,7 @@ using AllSimEffects =
     SimEffectList<effects::AccelScale, effects::GyroScale, effects::AccelMisalign, effects::GyroMisalign,
                   effects::LeverArm, effects::GpsLatency, effects::AccelTempBias, effects::GyroTempBias,
                   effects::MagHardIron, effects::MagSoftIron, effects::GyroGSensitivity,
-                  effects::MagMisalign, effects::GpsVelocityLatency>;
+                  effects::MagMisalign, effects::GpsVelocityLatency, effects::MagMotorInterference>;
 
 inline constexpr std::array<std::string_view, AllSimEffects::size> kEffectNames = AllSimEffects::names;
 
