@@ -1,6 +1,9 @@
 #include "estimator/nav/imu_screen.hpp"
 
 #include <cmath>
+#include <numbers>
+
+#include "estimator/earth/wgs84.hpp"
 
 namespace sinu::est {
 
@@ -12,7 +15,7 @@ namespace {
 // seconds, ten times (0.28^9 = 1e-5 per sample) practically never, so an
 // unusual range needs the longer run. 15 % either side leaves room for a
 // calibrated unit's scale and bias (a rail at 2000 deg/s may read 1950-2050).
-constexpr double kDegToRad = 0.017453292519943295, kG = 9.80665;
+constexpr double kDegToRad = std::numbers::pi / 180.0;
 constexpr double kGyroFullScales_deg_s[] = {125.0, 250.0, 500.0, 1000.0, 2000.0, 4000.0};
 constexpr double kAccelFullScales_g[] = {2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0, 24.0, 32.0};
 constexpr double kFullScaleTolerance = 0.15;
@@ -21,7 +24,7 @@ bool near_a_full_scale(double magnitude, bool accel) {
   const auto near = [&](double full_scale) { return std::abs(magnitude / full_scale - 1.0) <= kFullScaleTolerance; };
   if (accel) {
     for (double g : kAccelFullScales_g)
-      if (near(g * kG)) return true;
+      if (near(g * wgs84::kStandardGravity)) return true;
   } else {
     for (double dps : kGyroFullScales_deg_s)
       if (near(dps * kDegToRad)) return true;

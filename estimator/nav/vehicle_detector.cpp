@@ -6,13 +6,10 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "estimator/earth/wgs84.hpp"
 #include "estimator/ins/rotation.hpp"
 
 namespace sinu::est {
-
-namespace {
-constexpr double kG = 9.80665;  // [m/s^2]: a lateral acceleration in g (the bank it would need)
-}  // namespace
 
 void VehicleDetector::add(const NavState& nav, double dt_s, bool aided) {
   if (guess_ != VehicleGuess::Undecided) return;
@@ -24,7 +21,8 @@ void VehicleDetector::add(const NavState& nav, double dt_s, bool aided) {
   double turn = 0.0, lateral_accel_g = 0.0;
   if (moving && have_yaw_ && dt_s > 0.0) {
     turn = std::abs(wrap_pi(yaw - last_yaw_rad_));
-    lateral_accel_g = speed * wrap_pi(course - last_course_rad_) / dt_s / kG;  // to the right, as a bank
+    // To the right, in g: the bank it would need.
+    lateral_accel_g = speed * wrap_pi(course - last_course_rad_) / dt_s / wgs84::kStandardGravity;
   }
   last_yaw_rad_ = yaw;
   last_course_rad_ = course;

@@ -33,7 +33,8 @@ Measurement magnetometer_measurement(const ErrorStateFilter& filter, const NavSt
   const double thrust = Motor::thrust_m_s2(specific_force_b_m_s2);
   Measurement m;
   m.gate_sigma = gate_sigma;
-  m.innovation = S * u + filter.mag_hard_iron_b_uT() + Motor::reading(filter.view(Motor::spec.effect), thrust) - mag_b_uT;
+  const Eigen::Vector3d motor = Motor::reading(filter.view(Motor::spec.effect), thrust);
+  m.innovation = S * u + filter.mag_hard_iron_b_uT() + motor - mag_b_uT;
   m.H = MeasJacobian::Zero(3, L.dim);
   MagnetometerTerms t{C_bn, A, S, u_b, u, thrust, m.H, {}};
   for_each_effect([&]<class E>() {

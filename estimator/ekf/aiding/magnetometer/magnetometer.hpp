@@ -3,7 +3,8 @@
 // field is the Earth field (a NED state) rotated into the body, through the
 // magnetometer's axes (I - [theta x], optional states) and the soft iron
 // S = I + D (optional states), plus the hard iron (a body state):
-//   m_b = S (I - [theta x]) C_bn F_n + h_b + noise  [uT]   (below: S = I,
+//   m_b = S (I - [theta x]) C_bn F_n + h_b (+ k (-f_z - g0), the motors'
+//         field: effects/mag_motor_interference.hpp) + noise  [uT]   (below: S = I,
 //   theta = 0; with them H_field is premultiplied by A = S (I - [theta x]),
 //   and each effect file gives its own rows: effects/mag_*.hpp).
 // y = h(x_hat) - z. With phi (C_nb_hat = (I - [phi x]) C_nb), dF = F - F_hat,
