@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <string>
 #include <vector>
 #include <nlohmann/json.hpp>
@@ -42,6 +43,17 @@ nlohmann::json diagnose(const TempDir& dir, const std::string& effects_json, con
 }
 
 const nlohmann::json& first_candidate(const nlohmann::json& d) { return d["rounds"][0]["candidates"][0]; }
+
+/// Each of a candidate's estimates within 3 of its sigmas of the truth, or
+/// within `floor` where that is wider (a sigma a long flight makes tiny).
+void expect_within_3_sigma(const nlohmann::json& c, std::initializer_list<double> truth, double floor = 0.0) {
+  std::size_t i = 0;
+  for (const double t : truth) {
+    const double tol = std::max(3.0 * c["sigma"][i].get<double>(), floor);
+    EXPECT_NEAR(c["estimate"][i].get<double>(), t, tol) << "component " << i << ": " << c.dump();
+    ++i;
+  }
+}
 
 /// The dataset's first imu.csv time.
 double first_t(const std::string& ds) {
@@ -124,12 +136,8 @@ TEST(Diagnose, NamesAHiddenLeverArm) {
   const auto d = diagnose(dir, R"({"lever_arm": [0.9, -0.5, -0.6]})");
   ASSERT_GE(d["missing_effects"].size(), 1u) << d.dump(1);
   EXPECT_EQ(d["missing_effects"][0], "lever_arm");
-  const auto& c = first_candidate(d);
-  const double truth[3] = {0.9, -0.5, -0.6};
-  for (std::size_t i = 0; i < 3; ++i) {
-    // Within 3 sigma of the truth (sigmas 0.04-0.15 m: the lever arm shows only through rotations).
-    EXPECT_NEAR(c["estimate"][i].get<double>(), truth[i], 3.0 * c["sigma"][i].get<double>()) << "axis " << i;
-  }
+  // Sigmas 0.04-0.15 m: the lever arm shows only through rotations.
+  expect_within_3_sigma(first_candidate(d), {0.9, -0.5, -0.6});
   EXPECT_LT(d["after"]["rmse_pos_h_m"].get<double>(), d["before"]["rmse_pos_h_m"].get<double>());
 }
 
@@ -173,11 +181,8 @@ TEST(Diagnose, AModelFileEffectThatChangedIsNamedAsChanged) {
   EXPECT_EQ(d["missing_effects"].size(), 0u) << "the file's effect named as a new one";
   const auto& c = first_candidate(d);
   ASSERT_TRUE(c["changed_since_model_file"].get<bool>()) << c.dump();
-  const double truth[3] = {0.9, -0.5, -0.6};
-  for (std::size_t i = 0; i < 3; ++i) {
-    // Within 3 sigma of where the antenna is now (sigmas 0.05-0.2 m, as for a new lever arm).
-    EXPECT_NEAR(c["estimate"][i].get<double>(), truth[i], 3.0 * c["sigma"][i].get<double>()) << "axis " << i;
-  }
+  // Where the antenna is now (sigmas 0.05-0.2 m, as for a new lever arm).
+  expect_within_3_sigma(c, {0.9, -0.5, -0.6});
   EXPECT_LT(d["after"]["rmse_pos_h_m"].get<double>(), d["before"]["rmse_pos_h_m"].get<double>());
   // The next flight starts from where the antenna is now.
   std::ifstream in((dir.path() / "diag" / "model.json").string());
@@ -252,13 +257,8 @@ TEST(Diagnose, NamesAFieldThatFollowsTheThrust) {
   const auto d = diagnose(dir, R"({"mag_motor_interference": [1.5, -1.0, 2.0]})");
   ASSERT_GE(d["missing_effects"].size(), 1u) << d.dump(1);
   EXPECT_EQ(d["missing_effects"][0], "mag_motor_interference");
-  const auto& c = first_candidate(d);
-  const double truth[3] = {1.5, -1.0, 2.0};
-  for (std::size_t i = 0; i < 3; ++i) {
-    // The 20-min flight measured them to 0.01 (sigma 0.01); within 3 sigma or 0.05, what is larger.
-    const double tol = std::max(3.0 * c["sigma"][i].get<double>(), 0.05);
-    EXPECT_NEAR(c["estimate"][i].get<double>(), truth[i], tol) << c.dump();
-  }
+  // A 20-minute flight measured them to 0.01 (sigma 0.01); 0.05 at least.
+  expect_within_3_sigma(first_candidate(d), {1.5, -1.0, 2.0}, 0.05);
   EXPECT_LT(d["after"]["rmse_att_deg"].get<double>(), d["before"]["rmse_att_deg"].get<double>());
 }
 
@@ -414,12 +414,8 @@ TEST(Diagnose, NamesAHiddenGyroMisalignmentAndTheAppliedModelLowersTheOutageDrif
   EXPECT_EQ(d["missing_effects"][0], "gyro_misalign");
   EXPECT_TRUE(d["calibrated"].get<bool>());
   EXPECT_FALSE(d.contains("caution")) << "the unit's own noise model: " << d.dump(1);
-  const auto& c = first_candidate(d);
-  const double truth[6] = {0.010, -0.008, 0.012, 0.009, -0.011, 0.007};  // xy xz yx yz zx zy
-  for (std::size_t i = 0; i < 6; ++i) {
-    // Within 3 sigma (sigmas 1.2-2.7 mrad: a 20-minute flight's turns).
-    EXPECT_NEAR(c["estimate"][i].get<double>(), truth[i], 3.0 * c["sigma"][i].get<double>()) << "term " << i;
-  }
+  // xy xz yx yz zx zy; sigmas 1.2-2.7 mrad: a 20-minute flight's turns.
+  expect_within_3_sigma(first_candidate(d), {0.010, -0.008, 0.012, 0.009, -0.011, 0.007});
   EXPECT_NE(r.out.find("applied: " + out + "/model.json"), std::string::npos) << r.out;
 
   // Four 30-s outages; the same replay without, from the model file, and given the true states.
