@@ -103,7 +103,7 @@ class ErrorStateFilter {
   /// The magnetometer's axes against the body, I - [theta x] (identity without mag_misalign).
   Eigen::Matrix3d mag_misalignment() const { return misalignment_of(view(Effect::MagMisalign)); }
   /// The Earth field in the body -> the magnetometer's reading before the hard iron: S (I - [theta x]).
-  Eigen::Matrix3d mag_axes() const { return mag_soft_iron() * mag_misalignment(); }
+  Eigen::Matrix3d mag_axes() const { return mag_axes_of(view(Effect::MagSoftIron), view(Effect::MagMisalign)); }
   /// The body-frame field a reading implies, A^-1 (m - h), with the
   /// magnetometer model known so far: its states once they run, before that
   /// the priors a model file gave them (a hard iron found on an earlier
@@ -187,6 +187,9 @@ class ErrorStateFilter {
   double coloured_variance(Eigen::Index first_axis) const;
   double* values(Effect e) { return value_.data() + kEffectValueOffset[static_cast<std::size_t>(e)]; }
   static Eigen::Matrix3d misalignment_of(EffectView theta) { return Eigen::Matrix3d::Identity() - skew(theta.vec3()); }
+  static Eigen::Matrix3d mag_axes_of(EffectView soft_iron, EffectView misalign) {
+    return soft_iron.identity_plus_symmetric() * misalignment_of(misalign);
+  }
   struct FeedbackTerms;  // what an effect's feedback may use (error_state_filter.cpp)
   Eigen::Index hat_index(Eigen::Index axis) const { return axis * layout_.order; }
   /// P <- G P G^T for a 3-state block: a reset Jacobian.

@@ -257,7 +257,7 @@ void Navigator::process(const ImuSample& s) {
   }
 
   fuse_due_gnss(s.t_s, dt, r1);
-  fuse_magnetometer(s);
+  fuse_magnetometer(s, r1);
   ImuSample compensated = s;
   compensated.specific_force_b_m_s2 = r1.specific_force_b_m_s2;
   compensated.angular_rate_b_rad_s = r1.angular_rate_b_rad_s;
@@ -657,7 +657,7 @@ void Navigator::seed_position_on_fix(const GnssObservation& z, double dt_back) {
   filter_.seed_position_from(m);
 }
 
-void Navigator::fuse_magnetometer(const ImuSample& s) {
+void Navigator::fuse_magnetometer(const ImuSample& s, const BodyRates& now) {
   if (!cfg_.use_mag || !s.has_mag || !s.mag_b_uT.allFinite()) return;
   last_mag_sample_t_s_ = s.t_s;
   if (!mag_started_) {  // the first field sample switches the reserved states on
@@ -709,8 +709,8 @@ void Navigator::fuse_magnetometer(const ImuSample& s) {
   const double since = s.t_s - last_mag_fused_t_s_;
   last_mag_fused_t_s_ = s.t_s;
   const bool ok = fuse(AidingSource::Magnetometer,
-                       magnetometer_measurement(filter_, nav_, s.mag_b_uT, filter_.compensate(s).specific_force_b_m_s2,
-                                                mag_noise_.sigma(), cfg_.gate_sigma),
+                       magnetometer_measurement(filter_, nav_, s.mag_b_uT, now.specific_force_b_m_s2, mag_noise_.sigma(),
+                                                cfg_.gate_sigma),
                        s.t_s);
   check_heading(s.t_s);
   mag_noise_.learn(last_result_, since);

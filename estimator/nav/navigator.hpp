@@ -257,7 +257,7 @@ class Navigator {
   /// Process noise for what the IMU model leaves out: clipping, gaps, the gyro scale.
   void widen_for_imu_errors(const ImuSample& s, double dt);
   void fuse_due_gnss(double t_now, double dt, const BodyRates& now);
-  void fuse_magnetometer(const ImuSample& s);
+  void fuse_magnetometer(const ImuSample& s, const BodyRates& now);
   void fuse_vehicle_constraints(const ImuSample& s, const BodyRates& now);
   bool fuse(AidingSource src, const Measurement& m, double t_meas);
   /// The longest horizon the configuration and the IMU buffer allow.

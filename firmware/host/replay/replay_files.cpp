@@ -100,8 +100,8 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
   sj["duration_s"] = r.duration_s;
   sj["aligned"] = r.aligned;
   sj["aligned_at_s"] = r.aligned ? json(r.aligned_at_s) : json(nullptr);
+  constexpr double kDeg = 180.0 / std::numbers::pi;
   if (r.aligned) {
-    constexpr double kDeg = 180.0 / std::numbers::pi;
     const est::AlignmentResult& a = r.alignment;
     sj["alignment"] = {{"at_rest", a.at_rest},
                        {"heading_from", est::heading_source_name(a.heading_source)},
@@ -114,7 +114,7 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
     // Why there is no solution, and the field check that refused the magnetometer's heading (null: none).
     sj["not_aligned"] = {{"reason", r.not_aligned_reason()},
                          {"field_over_model", num(r.alignment.field_ratio)},
-                         {"dip_minus_model_deg", num(r.alignment.dip_difference_rad * 180.0 / std::numbers::pi)}};
+                         {"dip_minus_model_deg", num(r.alignment.dip_difference_rad * kDeg)}};
   }
   // The units check (estimator/nav/sensor_scale_check.hpp): null where nothing was judged.
   sj["sensor_units"] = {{"specific_force_over_gravity", num(r.scale.specific_force_over_gravity)},
