@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "estimator/align/field_heading_update.hpp"
 #include "estimator/earth/geomagnetic_model.hpp"
 #include "estimator/earth/wgs84.hpp"
 #include "estimator/ins/rotation.hpp"
@@ -112,10 +113,11 @@ bool CoarseAlignment::add_gnss(const GnssObservation& fix, double t_now, Alignme
   // whose horizontal angle is declination - yaw.
   if (cfg_.use_mag && r.has_mag) {
     const Eigen::Vector3d m_level = r.q_level * r.mean_mag_b_uT;
-    double declination = 0.0, sigma = 0.0;
-    if (declination_for(m_level, z, declination, sigma, out)) {
-      sigma = std::max(sigma, field_heading_sigma(m_level, rest_tilt_sigma()));
-      finish(z, t_now, declination - std::atan2(m_level.y(), m_level.x()), sigma, out);
+    const FieldDeclination d = declination_at(z);
+    if (field_recognised(m_level, z)) {
+      use_declination(d, out);
+      const double sigma = std::max(d.sigma_rad, field_heading_sigma(m_level, rest_tilt_sigma()));
+      finish(z, t_now, d.rad - std::atan2(m_level.y(), m_level.x()), sigma, out);
       return true;
     }
   }
@@ -130,46 +132,44 @@ bool CoarseAlignment::add_gnss(const GnssObservation& fix, double t_now, Alignme
   return true;
 }
 
-bool CoarseAlignment::declination_for(const Eigen::Vector3d& m_level, const GnssObservation& z, double& declination,
-                                      double& sigma, AlignmentResult& out) {
-  if (cfg_.declination_known) {
-    out.heading_source = HeadingSource::MagnetometerGivenDeclination;
-    sigma = cfg_.mag_heading_sigma_rad;
-    declination = out.declination_rad = cfg_.mag_declination_rad;
-    return true;
-  }
-  out.heading_source = HeadingSource::MagnetometerNoDeclination;
-  sigma = cfg_.mag_unknown_declination_sigma_rad;
-  declination = 0.0;
-  if (!cfg_.use_geomagnetic_model) return true;
-  // Not the Earth's field as the model knows it: an offset of tens of uT turns
-  // the horizontal field by any angle, so no sigma makes its heading honest.
-  const auto recognised = [&] {
-    return std::abs(field_ratio_ - 1.0) <= cfg_.geomag_max_field_ratio &&
-           std::abs(dip_difference_rad_) <= cfg_.geomag_max_dip_rad;
-  };
+CoarseAlignment::FieldDeclination CoarseAlignment::declination_at(const GnssObservation& z) const {
+  if (cfg_.declination_known)
+    return {cfg_.mag_declination_rad, cfg_.mag_heading_sigma_rad, 0.0, HeadingSource::MagnetometerGivenDeclination};
+  if (!cfg_.use_geomagnetic_model)
+    return {0.0, cfg_.mag_unknown_declination_sigma_rad, 0.0, HeadingSource::MagnetometerNoDeclination};
   // Without a date (GGA or VTG only, no RMC or ZDA): the model over its whole
   // span, its middle, the declination's drift to either end in the sigma
   // (0.1-0.2 deg a year at most sites: a few deg instead of 20).
   const bool dated = std::isfinite(z.decimal_year);
-  const double year = model_year(z);
-  const geomag::GeomagneticField f = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, year);
+  const double declination = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, model_year(z)).declination_rad;
   double drift = 0.0;
   if (!dated) {
     for (const double end : {geomag::kValidFromYear, geomag::kValidUntilYear - 1e-3}) {
       const double d = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, end).declination_rad;
-      drift = std::max(drift, std::abs(std::remainder(d - f.declination_rad, 2.0 * std::numbers::pi)));
+      drift = std::max(drift, std::abs(std::remainder(d - declination, 2.0 * std::numbers::pi)));
     }
   }
+  return {declination, std::hypot(cfg_.mag_heading_sigma_rad, drift), drift,
+          dated ? HeadingSource::MagnetometerModelDeclination : HeadingSource::MagnetometerUndatedModel};
+}
+
+bool CoarseAlignment::field_recognised(const Eigen::Vector3d& m_level, const GnssObservation& z) {
+  if (cfg_.declination_known || !cfg_.use_geomagnetic_model) return true;
+  // Not the Earth's field as the model knows it: an offset of tens of uT turns
+  // the horizontal field by any angle, so no sigma makes its heading honest.
+  const geomag::GeomagneticField f = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, model_year(z));
   const double dip = std::atan2(m_level.z(), m_level.head<2>().norm());
   field_ratio_ = m_level.norm() / f.total_uT;
   dip_difference_rad_ = dip - f.inclination_rad;
-  if (!recognised()) return false;
-  out.heading_source = dated ? HeadingSource::MagnetometerModelDeclination : HeadingSource::MagnetometerUndatedModel;
-  sigma = std::hypot(cfg_.mag_heading_sigma_rad, drift);
-  declination = out.declination_rad = f.declination_rad;
-  out.declination_drift_rad = drift;
-  return true;
+  return std::abs(field_ratio_ - 1.0) <= cfg_.geomag_max_field_ratio &&
+         std::abs(dip_difference_rad_) <= cfg_.geomag_max_dip_rad;
+}
+
+void CoarseAlignment::use_declination(const FieldDeclination& d, AlignmentResult& out) const {
+  out.heading_source = d.source;
+  if (d.source == HeadingSource::MagnetometerNoDeclination) return;
+  out.declination_rad = d.rad;
+  out.declination_drift_rad = d.drift_rad;
 }
 
 void CoarseAlignment::record_field_check(const GnssObservation& z, AlignmentResult& out) const {
@@ -180,43 +180,44 @@ void CoarseAlignment::record_field_check(const GnssObservation& z, AlignmentResu
   }
 }
 
-bool CoarseAlignment::mag_heading(const Eigen::Quaterniond& q_nb, double tilt_sigma, const Eigen::Vector3d& mag_b_uT,
-                                  const GnssObservation& z, double& heading, double& sigma, AlignmentResult& out) {
-  // The field in the levelled (yaw 0) frame is Rz(-yaw) F_n, whose horizontal angle is declination - yaw.
-  const double yaw = euler_from_quat(q_nb).z();
-  const Eigen::Quaterniond q_level = Eigen::Quaterniond(Eigen::AngleAxisd(-yaw, Eigen::Vector3d::UnitZ())) * q_nb;
-  const Eigen::Vector3d m_level = q_level * mag_b_uT;
-  double declination = 0.0;
-  if (!declination_for(m_level, z, declination, sigma, out)) return false;
-  sigma = std::max(sigma, field_heading_sigma(m_level, tilt_sigma));
-  heading = declination - std::atan2(m_level.y(), m_level.x());
-  return true;
-}
-
 bool CoarseAlignment::align_in_motion(const GnssObservation& z, double t_now, AlignmentResult& out) {
   InMotionSolution s;
   if (!in_motion_.add_gnss(z, t_now, s)) return false;
-  if (s.att_sigma_rad.head<2>().maxCoeff() > kGoodTilt) return false;
-  if (tilt_since_s_ < 0.0) tilt_since_s_ = t_now;
-  const double yaw_now = euler_from_quat(s.q_nb).z();
+  const bool tilt_good = s.att_sigma_rad.head<2>().maxCoeff() <= kGoodTilt;
+  if (tilt_good && tilt_since_s_ < 0.0) tilt_since_s_ = t_now;
   if (s.yaw_observable) {
+    if (!tilt_good) return false;
     out.heading_source = HeadingSource::InMotion;
-    finish_in_motion(z, t_now, s, yaw_now, s.att_sigma_rad.z(), out);
+    finish_in_motion(z, t_now, s, euler_from_quat(s.q_nb).z(), s.att_sigma_rad.z(), out);
     return true;
   }
-  double heading = 0.0, sigma = 0.0;
-  const double tilt_sigma = s.att_sigma_rad.head<2>().maxCoeff();
-  if (cfg_.use_mag && have_mag_ && mag_heading(s.q_nb, tilt_sigma, last_mag_b_uT_, z, heading, sigma, out)) {
-    finish_in_motion(z, t_now, s, heading, sigma, out);
+  // The field's heading, and with it the tilt about a steady acceleration's axis.
+  if (cfg_.use_mag && have_mag_ && with_field_heading(z, s, out) &&
+      s.att_sigma_rad.head<2>().maxCoeff() <= kGoodTilt) {
+    finish_in_motion(z, t_now, s, euler_from_quat(s.q_nb).z(), s.att_sigma_rad.z(), out);
     return true;
   }
-  if (t_now - tilt_since_s_ >= cfg_.course_wait_s && z.has_velocity &&
+  if (tilt_good && t_now - tilt_since_s_ >= cfg_.course_wait_s && z.has_velocity &&
       z.v_ne_m_s.norm() >= cfg_.min_course_speed_m_s) {
     out.heading_source = HeadingSource::GnssCourse;
     finish_in_motion(z, t_now, s, std::atan2(z.v_ne_m_s.y(), z.v_ne_m_s.x()), cfg_.course_heading_sigma_rad, out);
     return true;
   }
   return false;
+}
+
+bool CoarseAlignment::with_field_heading(const GnssObservation& z, InMotionSolution& s, AlignmentResult& out) {
+  const FieldDeclination d = declination_at(z);
+  const double horizontal_uT = (s.q_nb * last_mag_b_uT_).head<2>().norm();
+  const double sigma = std::max(d.sigma_rad, std::atan2(cfg_.mag_residual_field_uT, horizontal_uT));
+  InMotionSolution c = s;
+  if (!update_with_field_heading(c.q_nb, c.att_cov_rad2, last_mag_b_uT_, d.rad, sigma)) return false;
+  // The field is checked against the model at the updated tilt (in NED: levelled, its strength and dip).
+  if (!field_recognised(c.q_nb * last_mag_b_uT_, z)) return false;
+  c.att_sigma_rad = c.att_cov_rad2.diagonal().cwiseMax(0.0).cwiseSqrt();
+  use_declination(d, out);
+  s = c;
+  return true;
 }
 
 void CoarseAlignment::finish_in_motion(const GnssObservation& z, double t_now, const InMotionSolution& s,

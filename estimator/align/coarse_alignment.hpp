@@ -17,8 +17,10 @@
 //       local anomaly) may point anywhere: no heading from it; the alignment
 //       waits for the GNSS motion as without a magnetometer;
 //     - in motion, the in-motion alignment's own heading once the velocity
-//       has changed enough to show it; else the magnetometer; else, after
-//       course_wait_s of tilt without either, the GNSS course;
+//       has changed enough to show it; else the magnetometer, as a
+//       measurement of the in-motion attitude (field_heading_update.hpp: in a
+//       steady acceleration it also gives the tilt the velocity cannot);
+//       else, after course_wait_s of tilt without either, the GNSS course;
 //     - at rest without a magnetometer, the GNSS course once the speed
 //       passes min_course_speed_m_s (sigma covers crab and sideslip); from
 //       differenced fixes when the receiver sends no velocity
@@ -159,25 +161,31 @@ class CoarseAlignment {
   bool align_in_motion(const GnssObservation& z, double t_now_s, AlignmentResult& out);
   void finish_in_motion(const GnssObservation& z, double t_now_s, const InMotionSolution& s, double yaw_rad,
                         double yaw_sigma_rad, AlignmentResult& out);
-  /// Heading [rad] from a body-frame field and an attitude whose tilt is known,
-  /// with the declination chosen by declination_for (source and sigma into `out`);
-  /// false when declination_for says the field gives no heading.
-  bool mag_heading(const Eigen::Quaterniond& q_nb, double tilt_sigma_rad, const Eigen::Vector3d& mag_b_uT,
-                   const GnssObservation& z, double& heading_rad, double& sigma_rad, AlignmentResult& out);
+  /// The in-motion solution `s` updated with the last magnetometer sample's
+  /// heading (field_heading_update.hpp), when the field is the Earth's at the
+  /// updated tilt (field_recognised): true, `s` and the heading's source in `out`.
+  bool with_field_heading(const GnssObservation& z, InMotionSolution& s, AlignmentResult& out);
   /// A magnetic heading's sigma from the field alone: the residual field and the
   /// vertical field the tilt's error turns into the horizontal, over the horizontal field.
   double field_heading_sigma(const Eigen::Vector3d& m_level_uT, double tilt_sigma_rad) const;
   /// The levelled attitude's tilt sigma: the levelling's noise and the gyros' since the rest.
   double rest_tilt_sigma() const;
-  /// The declination for a field measured in the levelled frame at the fix z:
-  /// given, or the model's when the field is the Earth's (without a date, at
-  /// the middle of its span), or none (0, wide sigma) with the model switched
-  /// off. False when the model does not recognise
-  /// the field (its heading may be off by any angle).
   /// A fix's speed against the rest windows since the last still fix (see the header).
   void check_rest(const GnssObservation& z);
-  bool declination_for(const Eigen::Vector3d& m_level_uT, const GnssObservation& z, double& declination_rad,
-                       double& sigma_rad, AlignmentResult& out);
+  /// The declination at the fix z: given, or the model's (without a date, at
+  /// the middle of its span, its drift to either end in the sigma), or none
+  /// (0, wide sigma) with the model switched off.
+  struct FieldDeclination {
+    double rad = 0.0, sigma_rad = 0.0, drift_rad = 0.0;
+    HeadingSource source = HeadingSource::MagnetometerNoDeclination;
+  };
+  FieldDeclination declination_at(const GnssObservation& z) const;
+  /// Whether a field measured in the levelled frame is the Earth's as the
+  /// model has it at z (strength and dip; recorded for the result). False:
+  /// its heading may be off by any angle. True when the model is not consulted.
+  bool field_recognised(const Eigen::Vector3d& m_level_uT, const GnssObservation& z);
+  /// The declination's source and value into the result.
+  void use_declination(const FieldDeclination& d, AlignmentResult& out) const;
   /// The last field check against the model (NaN: none), kept for the result
   /// whichever source the heading finally came from.
   void record_field_check(const GnssObservation& z, AlignmentResult& out) const;

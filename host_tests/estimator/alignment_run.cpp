@@ -23,10 +23,10 @@ const Trajectory& flight() {
 
 /// Straight, level flight at constant NED velocity (40 m/s, course 34 deg):
 /// f_n = -g + (2 w_ie + w_en) x v, w_ib = C_bn (w_ie + w_en), constant Euler angles.
-Trajectory straight_level(double duration_s) {
+Trajectory straight_level(double duration_s, double accel_m_s2) {
   namespace w = est::wgs84;
   Trajectory r;
-  const Eigen::Vector3d v_n(40.0 * std::cos(0.6), 40.0 * std::sin(0.6), 0.0);
+  const Eigen::Vector3d track(std::cos(0.6), std::sin(0.6), 0.0);
   const Eigen::Quaterniond q_nb = est::quat_from_euler(0.02, 0.05, 0.6);
   const Eigen::Matrix3d C_bn = q_nb.toRotationMatrix().transpose();
   double lat = 40.0 * kDeg, lon = -105.0 * kDeg;
@@ -35,6 +35,7 @@ Trajectory straight_level(double duration_s) {
   for (std::size_t i = 0; i <= n; ++i) {
     TruthSample s;
     s.nav.t_s = kFlightStart + static_cast<double>(i) * dt;
+    const Eigen::Vector3d v_n = (40.0 + accel_m_s2 * static_cast<double>(i) * dt) * track;
     s.nav.q_nb = q_nb;
     s.nav.v_n_m_s = v_n;
     s.nav.lat_rad = lat;
@@ -43,11 +44,12 @@ Trajectory straight_level(double duration_s) {
     const Eigen::Vector3d w_ie = w::omega_ie_n(lat), w_en = w::omega_en_n(lat, h, v_n);
     const Eigen::Vector3d g(0.0, 0.0, w::normal_gravity_m_s2(lat, h));
     s.imu.t_s = s.nav.t_s;
-    s.imu.specific_force_b_m_s2 = C_bn * (-g + (2.0 * w_ie + w_en).cross(v_n));
+    s.imu.specific_force_b_m_s2 = C_bn * (accel_m_s2 * track - g + (2.0 * w_ie + w_en).cross(v_n));
     s.imu.angular_rate_b_rad_s = C_bn * (w_ie + w_en);
     r.truth.push_back(s);
-    lat += v_n.x() * dt / (w::meridian_radius_m(lat) + h);
-    lon += v_n.y() * dt / ((w::transverse_radius_m(lat) + h) * std::cos(lat));
+    const Eigen::Vector3d v_mid = v_n + 0.5 * accel_m_s2 * dt * track;  // exact for a constant acceleration
+    lat += v_mid.x() * dt / (w::meridian_radius_m(lat) + h);
+    lon += v_mid.y() * dt / ((w::transverse_radius_m(lat) + h) * std::cos(lat));
   }
   r.gnss = AnalyticFlight::gnss(r.truth, kGnssEvery, 0.0, Eigen::Vector3d::Zero(), 0.5, 0.1);
   return r;

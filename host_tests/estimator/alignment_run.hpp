@@ -26,8 +26,9 @@ struct Trajectory {
 Trajectory make_flight(const Eigen::Vector3d& lever_b_m);
 /// make_flight(0), built once.
 const Trajectory& flight();
-/// Straight, level flight at constant NED velocity (40 m/s, course 34 deg).
-Trajectory straight_level(double duration_s);
+/// Straight, level flight along course 34 deg from 40 m/s, at a constant
+/// acceleration along the track (0: constant velocity).
+Trajectory straight_level(double duration_s, double accel_m_s2 = 0.0);
 
 /// Sensor errors added in the test (default: perfect sensors).
 struct Errors {
