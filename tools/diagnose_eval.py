@@ -37,7 +37,7 @@ import sys
 
 EFFECTS = ["accel_scale", "gyro_scale", "accel_misalign", "gyro_misalign", "lever_arm", "gps_latency",
            "accel_temp_bias", "gyro_temp_bias", "mag_hard_iron", "mag_soft_iron", "gyro_g_sensitivity",
-           "mag_misalign", "gps_velocity_latency", "mag_motor_interference"]
+           "mag_misalign", "gps_velocity_latency", "mag_motor_interference", "mag_latency"]
 # Carried by the model (the latency from the configured value, the hard iron from
 # zero with a magnetometer): nothing is missing, the baseline follows them, and
 # diagnose names them as carried and far from the assumed value (diagnosis.json

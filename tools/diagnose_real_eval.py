@@ -39,7 +39,7 @@ from diagnose_eval import CARRIED, EFFECTS, write_section
 HERE = os.path.dirname(os.path.abspath(__file__))
 # Effects whose injected value is the state's, times this (ppm for the scales), component for component.
 SIMPLE_UNITS = {"gps_latency": 1.0, "lever_arm": 1.0, "mag_hard_iron": 1.0, "accel_scale": 1e-6, "gyro_scale": 1e-6,
-                "gps_velocity_latency": 1.0, "mag_motor_interference": 1.0}
+                "gps_velocity_latency": 1.0, "mag_motor_interference": 1.0, "mag_latency": 1.0}
 
 
 def run(cmd):

@@ -15,6 +15,8 @@ recorded measurements as the simulator applies it to the true ones:
   lever_arm l:    every fix moves to the antenna: p + C_nb l, v + C_nb (w x l)
   gps_latency dt: every sentence arrives dt later (its UTC still the fix's instant,
                   as the dataset contract says; a real receiver's latency)
+  mag_latency tau: every field sample is the log's own field tau earlier (interpolated
+                  between its samples; none before the first tau of field)
   gps_velocity_latency tau: every RMC/VTG velocity is the log's own velocity tau
                   earlier (interpolated between its epochs), on top of its own lag
 The recording's own errors stay in (the log's unit has its own scale factors,
@@ -309,6 +311,25 @@ def inject_gps(src, dst, fx, attitude, imu_t, imu_w):
             fo.write(f"{arrival_text(arrival, latency)},{join_sentence(f)}\n")
 
 
+def delay_field(path, tau):
+    """imu.csv's field samples replaced by the field tau earlier (mag_latency)."""
+    with open(path, newline="") as f:
+        header = f.readline()
+        rows = [line.rstrip("\r\n").split(",") for line in f]
+    names = header.strip().split(",")
+    it, ix = names.index("t"), names.index("mx")
+    field_t = np.array([float(r[it]) for r in rows if r[ix].strip()])
+    field = np.array([[float(v) for v in r[ix:ix + 3]] for r in rows if r[ix].strip()])
+    with open(path, "w", newline="") as f:
+        f.write(header)
+        for r in rows:
+            if r[ix].strip():
+                t = float(r[it]) - tau
+                r[ix:ix + 3] = ([f"{np.interp(t, field_t, field[:, k]):.9g}" for k in range(3)]
+                                if t >= field_t[0] else ["", "", ""])
+            f.write(",".join(r) + "\n")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--in", dest="src", required=True, help="dataset folder (imu.csv, gps.nmea)")
@@ -325,12 +346,14 @@ def main():
     fx = fx.get("effects", fx)
     known = {"accel_scale", "gyro_scale", "accel_misalign", "gyro_misalign", "gyro_g_sensitivity", "accel_temp_bias",
              "gyro_temp_bias", "mag_soft_iron", "mag_hard_iron", "mag_misalign", "lever_arm", "gps_latency",
-             "gps_velocity_latency", "mag_motor_interference"}
+             "gps_velocity_latency", "mag_motor_interference", "mag_latency"}
     unknown = set(fx) - known
     if unknown:
         raise SystemExit(f"inject_effect: {a.effects}: unknown effect(s) {', '.join(sorted(unknown))}")
     os.makedirs(a.out, exist_ok=True)
     imu_t, imu_w = inject_imu(os.path.join(a.src, "imu.csv"), os.path.join(a.out, "imu.csv"), fx)
+    if float(fx.get("mag_latency", 0.0)) > 0.0:
+        delay_field(os.path.join(a.out, "imu.csv"), float(fx["mag_latency"]))
     gps = os.path.join(a.src, "gps.nmea")
     if os.path.exists(gps):
         inject_gps(gps, os.path.join(a.out, "gps.nmea"), fx, Attitude(a.nav) if a.nav else None, imu_t, imu_w)

@@ -709,7 +709,7 @@ void Navigator::fuse_magnetometer(const ImuSample& s, const BodyRates& now) {
   const double since = s.t_s - last_mag_fused_t_s_;
   last_mag_fused_t_s_ = s.t_s;
   const bool ok = fuse(AidingSource::Magnetometer,
-                       magnetometer_measurement(filter_, nav_, s.mag_b_uT, now.specific_force_b_m_s2, mag_noise_.sigma(),
+                       magnetometer_measurement(filter_, nav_, s.mag_b_uT, now, mag_noise_.sigma(),
                                                 cfg_.gate_sigma),
                        s.t_s);
   check_heading(s.t_s);

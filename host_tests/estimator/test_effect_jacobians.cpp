@@ -218,9 +218,10 @@ const SourceCase kSources[] = {
        return s;
      }(),
      [](const ErrorStateFilter& f, const NavState& nav, double) {
-       // A climb's thrust, 1.9 m/s^2 beyond a hover's (mag_motor_interference's input).
-       return magnetometer_measurement(f, nav, Eigen::Vector3d(20.0, -5.0, 40.0), Eigen::Vector3d(0.4, -0.3, -11.7),
-                                       0.5, 5.0);
+       // A climb's thrust, 1.9 m/s^2 beyond a hover's (mag_motor_interference's input), in a
+       // turn (mag_latency's).
+       const BodyRates now{Eigen::Vector3d(0.4, -0.3, -11.7), Eigen::Vector3d(0.2, -0.1, 0.5)};
+       return magnetometer_measurement(f, nav, Eigen::Vector3d(20.0, -5.0, 40.0), now, 0.5, 5.0);
      }},
 };
 

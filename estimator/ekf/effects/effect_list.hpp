@@ -22,6 +22,7 @@
 #include "estimator/ekf/effects/lever_arm.hpp"
 #include "estimator/ekf/effects/mag_earth_field.hpp"
 #include "estimator/ekf/effects/mag_hard_iron.hpp"
+#include "estimator/ekf/effects/mag_latency.hpp"
 #include "estimator/ekf/effects/mag_misalign.hpp"
 #include "estimator/ekf/effects/mag_motor_interference.hpp"
 #include "estimator/ekf/effects/mag_soft_iron.hpp"
@@ -41,7 +42,8 @@ using AllEffects = EffectList<effects::AccelScale, effects::GyroScale, effects::
                               effects::GpsPositionBias, effects::MagEarthField, effects::MagHardIron,
                               effects::MagSoftIron, effects::AccelMisalign, effects::GyroMisalign,
                               effects::GyroGSensitivity, effects::MagMisalign,
-                              effects::GpsVelocityLatency, effects::MagMotorInterference, effects::VehicleMount>;
+                              effects::GpsVelocityLatency, effects::MagMotorInterference, effects::MagLatency,
+                              effects::VehicleMount>;
 static_assert(AllEffects::size == kEffectCount, "every Effect has its file in AllEffects");
 
 /// Calls f.template operator()<E>() for every registered effect, in enum order.

@@ -14,9 +14,9 @@ namespace sinu::est {
 enum class Effect : std::uint8_t {
   AccelScale, GyroScale, LeverArm, GpsLatency, AccelTempBias, GyroTempBias, AccelBias, GyroBias,
   GpsPositionBias, MagEarthField, MagHardIron, MagSoftIron, AccelMisalign, GyroMisalign, GyroGSensitivity, MagMisalign,
-  GpsVelocityLatency, MagMotorInterference, VehicleMount
+  GpsVelocityLatency, MagMotorInterference, MagLatency, VehicleMount
 };
-inline constexpr std::size_t kEffectCount = 19;
+inline constexpr std::size_t kEffectCount = 20;
 
 /// How an effect's states are indexed.
 enum class Components : std::uint8_t {

@@ -16,6 +16,7 @@
 //   mag_soft_iron [3x3]                          m = S R m_earth_b (+ hard iron); nominal S = I
 //   mag_misalign [rad x3]                        R = exp(-[theta x]): the magnetometer's axes turned by theta
 //   mag_motor_interference [uT per m/s^2 x3]     m += k (-f_z - g0): the motors' current, with the thrust
+//   mag_latency [s]                              the field of the attitude tau before the stamp
 //   gyro_g_sensitivity [rad/s per m/s^2, 3x3]    gyro += G f_b (true specific force)
 // JSON: {"lever_arm": [0.6, -0.2, -0.4], "gps_latency": 0.15,
 //        "gyro_g_sensitivity": [[..],[..],[..]], ...}; 3x3 values are arrays of rows.
@@ -45,6 +46,7 @@ struct Effects {
   std::optional<Eigen::Matrix3d> mag_soft_iron{};
   std::optional<Eigen::Vector3d> mag_misalign_rad{};
   std::optional<Eigen::Vector3d> mag_motor_uT_per_m_s2{};
+  std::optional<double> mag_latency_s{};
   std::optional<Eigen::Matrix3d> gyro_g_sensitivity_rad_s_per_m_s2{};
 
   std::size_t count() const;

@@ -1,5 +1,6 @@
 #include "firmware/host/sim/imu_sensor.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
@@ -63,6 +64,7 @@ ImuSensor::ImuSensor(const ImuErrorModel& model, const Effects& fx, const Eigen:
   gyro_temp_k_ = e.gyro_temp_per_degC;
   hard_iron_ = e.mag_hard_iron_uT;
   motor_field_ = e.mag_motor_uT_per_m_s2;
+  mag_latency_s_ = e.mag_latency_s;
   earth_field_n_uT_ = earth_field_n_uT;
 }
 
@@ -73,7 +75,11 @@ ImuOutput ImuSensor::sample(const Eigen::Vector3d& f_b, const Eigen::Vector3d& w
   out.specific_force_b_m_s2 = accel_.measure(accel_gain_ * f_b + accel_.step(rng_) + accel_temp_k_ * dT);
   out.angular_rate_b_rad_s =
       gyro_.measure(gyro_gain_ * w_b + g_sensitivity_ * f_b + gyro_.step(rng_) + gyro_temp_k_ * dT);
-  const Eigen::Vector3d m = mag_axes_ * (C_nb.transpose() * earth_field_n_uT_) + hard_iron_ +
+  // A late reading: the body field of mag_latency_s ago, turned back by the rate over it.
+  const double turn_rad = w_b.norm() * mag_latency_s_;
+  const Eigen::Matrix3d back = turn_rad > 0.0 ? Eigen::AngleAxisd(turn_rad, w_b.normalized()).toRotationMatrix()
+                                              : Eigen::Matrix3d::Identity();
+  const Eigen::Vector3d m = mag_axes_ * (back * C_nb.transpose() * earth_field_n_uT_) + hard_iron_ +
                             motor_field_ * (-f_b.z() - est::wgs84::kStandardGravity);
   const double mag_sigma = model_.mag.white_noise_sigma_uT, mag_q = model_.mag.quantisation_step_uT;
   for (Eigen::Index i = 0; i < 3; ++i) out.mag_b_uT[i] = quantise(m[i] + mag_sigma * rng_.normal(), mag_q);

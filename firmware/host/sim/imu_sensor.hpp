@@ -49,6 +49,7 @@ class ImuSensor {
   TriadErrors accel_, gyro_;
   Eigen::Matrix3d accel_gain_, gyro_gain_, g_sensitivity_, mag_axes_;  // mag_axes_: soft iron x misalignment
   Eigen::Vector3d accel_temp_k_, gyro_temp_k_, hard_iron_, motor_field_, earth_field_n_uT_;
+  double mag_latency_s_ = 0.0;
 };
 
 }  // namespace sinu::sim

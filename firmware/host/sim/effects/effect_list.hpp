@@ -18,6 +18,7 @@
 #include "firmware/host/sim/effects/gyro_temp_bias.hpp"
 #include "firmware/host/sim/effects/lever_arm.hpp"
 #include "firmware/host/sim/effects/mag_hard_iron.hpp"
+#include "firmware/host/sim/effects/mag_latency.hpp"
 #include "firmware/host/sim/effects/mag_misalign.hpp"
 #include "firmware/host/sim/effects/mag_motor_interference.hpp"
 #include "firmware/host/sim/effects/mag_soft_iron.hpp"
@@ -37,7 +38,8 @@ using AllSimEffects =
     SimEffectList<effects::AccelScale, effects::GyroScale, effects::AccelMisalign, effects::GyroMisalign,
                   effects::LeverArm, effects::GpsLatency, effects::AccelTempBias, effects::GyroTempBias,
                   effects::MagHardIron, effects::MagSoftIron, effects::GyroGSensitivity,
-                  effects::MagMisalign, effects::GpsVelocityLatency, effects::MagMotorInterference>;
+                  effects::MagMisalign, effects::GpsVelocityLatency, effects::MagMotorInterference,
+                  effects::MagLatency>;
 
 inline constexpr std::array<std::string_view, AllSimEffects::size> kEffectNames = AllSimEffects::names;
 

@@ -21,6 +21,7 @@ struct SensorEffects {
   Eigen::Matrix3d mag_axes = Eigen::Matrix3d::Identity();        // R: body -> the magnetometer's axes
   Eigen::Vector3d mag_hard_iron_uT = Eigen::Vector3d::Zero();
   Eigen::Vector3d mag_motor_uT_per_m_s2 = Eigen::Vector3d::Zero();  // m += k (-f_z - g0): the motors' current
+  double mag_latency_s = 0.0;                                       // the field of the attitude this much earlier
   Eigen::Vector3d accel_temp_per_degC = Eigen::Vector3d::Zero(), gyro_temp_per_degC = Eigen::Vector3d::Zero();
   Eigen::Vector3d lever_arm_b_m = Eigen::Vector3d::Zero();       // antenna = IMU + C_nb l
   double gps_latency_s = 0.0;                                     // each fix this much older than its stamp
