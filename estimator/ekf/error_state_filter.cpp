@@ -576,7 +576,28 @@ void ErrorStateFilter::seed_accel_bias_at_rest(NavState& nav, const Eigen::Vecto
 
 double ErrorStateFilter::sensor_error(Eigen::Index axis) const { return sensor_hat_(hat_index(axis)); }
 
-void ErrorStateFilter::seed_gyro_bias(const Eigen::Vector3d& bias, double sigma) {
+void ErrorStateFilter::seed_gyro_bias(const Eigen::Vector3d& mean_rate_b, const Eigen::Vector3d& f_b, double sigma) {
+  // The bias is what compensate() must take off the mean rate to leave no
+  // rate; it is affine in the bias with a gain near -I (a scale's or a
+  // misalignment's 1e-3 beside it), so a step or two settle it. Counted twice,
+  // a model file's g-sensitivity of 5e-4 rad/s per m/s^2 turned the heading
+  // 12 deg in the first 48 s (docs/diagnose.md).
+  ImuSample rest;
+  rest.specific_force_b_m_s2 = f_b;
+  rest.angular_rate_b_rad_s = mean_rate_b;
+  rest.temp_degC = temp_ref_degC_;
+  rest.has_temp = true;
+  Eigen::Vector3d bias = mean_rate_b;
+  for (int step = 0; step < 3; ++step) {
+    put_gyro_bias(bias, sigma);
+    const Eigen::Vector3d left = compensate(rest).angular_rate_b_rad_s;
+    if (!(left.squaredNorm() > 0.0)) return;
+    bias += left;
+  }
+  put_gyro_bias(bias, sigma);
+}
+
+void ErrorStateFilter::put_gyro_bias(const Eigen::Vector3d& bias, double sigma) {
   if (layout_.has(Effect::GyroBias)) {
     for (Eigen::Index i = 0; i < 3; ++i) set_effect(Effect::GyroBias, i, bias(i));
     const Eigen::Index s = layout_.of(Effect::GyroBias).start;

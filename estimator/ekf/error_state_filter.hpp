@@ -163,10 +163,13 @@ class ErrorStateFilter {
   /// mean specific force f_b): the bias's covariance becomes that of the sum,
   /// correlated with the others by their own Jacobians.
   void correlate_gyro_bias_at_rest(const NavState& nav, const Eigen::Vector3d& mean_specific_force_b_m_s2);
-  /// Seeds the gyro bias measured at rest and its uncertainty [rad/s]: into
-  /// the gyro_bias states when active, else into the sensor-error states
-  /// (all lags of an AR block get the same value).
-  void seed_gyro_bias(const Eigen::Vector3d& bias_rad_s, double sigma_rad_s);
+  /// Seeds the gyro bias from a mean rate the alignment measured (the Earth's
+  /// rate removed) at the mean specific force f_b, and its uncertainty
+  /// [rad/s]: what the model's other effects put into the gyro there (a
+  /// g-sensitivity's G f, a model file's) is not the bias. Into the gyro_bias
+  /// states when active, else into the sensor-error states (all lags of an
+  /// AR block get the same value).
+  void seed_gyro_bias(const Eigen::Vector3d& mean_rate_b_rad_s, const Eigen::Vector3d& f_b_m_s2, double sigma_rad_s);
   void set_lever_arm(const Eigen::Vector3d& l) {
     for (Eigen::Index i = 0; i < 3; ++i) set_effect(Effect::LeverArm, i, l(i));
   }
@@ -176,6 +179,8 @@ class ErrorStateFilter {
 
  private:
   void apply_prior(Effect e);
+  /// seed_gyro_bias's value and sigma into the states (see there).
+  void put_gyro_bias(const Eigen::Vector3d& bias_rad_s, double sigma_rad_s);
   /// A rest window's mean specific force, compensated with the current estimates.
   BodyRates compensate_at_rest(const Eigen::Vector3d& f_b) const;
   /// The error dynamics' rate rows (`rows`: the velocity's or the attitude's)

@@ -299,14 +299,19 @@ void Navigator::align(const ImuSample& s, double dt) {
     nav_ = res.nav;
     filter_.seed_attitude(res.att_sigma_rad);
     filter_.reset_block(filter_.layout().vel, res.vel_sigma_m_s);
-    filter_.seed_gyro_bias(res.gyro_bias_rad_s, res.gyro_bias_sigma_rad_s);
+    filter_.set_reference_temperature(res.temp_ref_degC);
+    // The rate was measured at the rest's specific force, or in motion on the
+    // window's average, about gravity's.
+    const Eigen::Vector3d f_b = res.at_rest ? res.rest_specific_force_b_m_s2
+                                            : Eigen::Vector3d(nav_.C_nb().transpose() *
+                                                              Eigen::Vector3d(0.0, 0.0, -wgs84::kStandardGravity));
+    filter_.seed_gyro_bias(res.gyro_bias_rad_s, f_b, res.gyro_bias_sigma_rad_s);
     if (res.at_rest) {
       // Floor: normal gravity against the site's true gravity (anomalies ~1e-3 g).
       filter_.correlate_gyro_bias_at_rest(nav_, res.rest_specific_force_b_m_s2);
       filter_.seed_accel_bias_at_rest(nav_, res.rest_specific_force_b_m_s2,
                                       std::max(res.rest_specific_force_sigma_m_s2, 0.01));
     }
-    filter_.set_reference_temperature(res.temp_ref_degC);
     filter_.set_gps_bias_sigma(z.sigma_ned_m, 0.0, white_scale(z));
     seed_position_on_fix(z, s.t_s - (z.arrival_s - latency));
     recovery_.restart(s.t_s);

@@ -272,6 +272,42 @@ TEST(Replay, AModelFilesHardIronGivesTheHeadingAtRest) {
   EXPECT_LT(rms_of(e.t, e.err_yaw_deg, e.t.front(), e.t.front() + 120.0), 1.5);
 }
 
+// A model file's g-sensitivity puts G f into the gyro at rest too, and the
+// rest's mean rate already held it: seeded whole as the bias, G f was taken
+// off twice. On the diagnose evaluation's flight with three times its drawn
+// g-sensitivity (zz -5e-4 rad/s per m/s^2: 0.29 deg/s at 1 g) the heading ran
+// 12 deg off in the first 48 s and the outage drift doubled (23.9 m against
+// the baseline's 11.1); seeded with G f left out, 10.8 m.
+TEST(Replay, AModelFilesGSensitivityIsNotCountedTwiceAtRest) {
+  TempDir dir;
+  const std::string ds = dir.file("f"), model = dir.file("model.json"), fx = dir.file("g.json");
+  const std::string hidden = dir.file("hidden.json"), out = dir.file("known");
+  std::ofstream(fx) << R"({"gyro_g_sensitivity": [[-7e-4, 1e-4, 1e-4], [2.5e-4, 5e-4, -2.2e-4], )"
+                       R"([-2.4e-4, -2.1e-4, -5.8e-4]]})";
+  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", ds, "--seed", "4", "--duration", "300", "--effects", fx,
+                      "--hidden-out", hidden})
+                .exit_code,
+            0);
+  std::ofstream(model) << R"({"effects": {"gyro_g_sensitivity": {"estimate": [-7e-4, 1e-4, 1e-4, 2.5e-4, 5e-4, )"
+                          R"(-2.2e-4, -2.4e-4, -2.1e-4, -5.8e-4], "sigma": [2e-5, 2e-5, 2e-5, 2e-5, 2e-5, 2e-5, )"
+                          R"(2e-5, 2e-5, 2e-5]}}})";
+  ASSERT_EQ(run_sinu({"replay", "--in", ds, "--model-file", model, "--quiet", "--out", out}).exit_code, 0);
+  const auto s = read_json(out + "/summary.json");
+  EXPECT_TRUE(s["alignment"]["at_rest"].get<bool>());
+  const auto truth = read_json(hidden)["imu_error_model"]["gyro"]["turn_on_bias"];
+  for (const auto& e : s["effects"]) {
+    if (e["name"] != "gyro_bias") continue;
+    for (std::size_t i = 0; i < 3; ++i) {
+      // The rest measures the bias to ~1e-4 rad/s; the flight's own walk
+      // moves it by less: measured 0.05-0.25e-3 off. Counted twice, G f was
+      // 5.7e-3 rad/s about z, and 5 minutes of flight left 2.3e-3 of it.
+      EXPECT_NEAR(e["estimate"][i].get<double>(), truth[i].get<double>(), 1e-3) << "axis " << i;
+    }
+    return;
+  }
+  ADD_FAILURE() << "no gyro_bias in summary.json's effects";
+}
+
 // "GNSS alone" is the yardstick every replay prints. It placed each fix at
 // arrival minus the configured latency: at 40 m/s a receiver 0.05 s later than
 // configured added 2 m along the track to the receiver's own error (an
