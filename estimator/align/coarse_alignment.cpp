@@ -114,7 +114,7 @@ bool CoarseAlignment::add_gnss(const GnssObservation& fix, double t_now, Alignme
   if (cfg_.use_mag && r.has_mag) {
     const Eigen::Vector3d m_level = r.q_level * r.mean_mag_b_uT;
     const FieldDeclination d = declination_at(z);
-    if (field_recognised(m_level, z)) {
+    if (field_recognised(m_level, d)) {
       use_declination(d, out);
       const double sigma = std::max(d.sigma_rad, field_heading_sigma(m_level, rest_tilt_sigma()));
       finish(z, t_now, d.rad - std::atan2(m_level.y(), m_level.x()), sigma, out);
@@ -141,7 +141,8 @@ CoarseAlignment::FieldDeclination CoarseAlignment::declination_at(const GnssObse
   // span, its middle, the declination's drift to either end in the sigma
   // (0.1-0.2 deg a year at most sites: a few deg instead of 20).
   const bool dated = std::isfinite(z.decimal_year);
-  const double declination = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, model_year(z)).declination_rad;
+  const geomag::GeomagneticField f = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, model_year(z));
+  const double declination = f.declination_rad;
   double drift = 0.0;
   if (!dated) {
     for (const double end : {geomag::kValidFromYear, geomag::kValidUntilYear - 1e-3}) {
@@ -150,17 +151,17 @@ CoarseAlignment::FieldDeclination CoarseAlignment::declination_at(const GnssObse
     }
   }
   return {declination, std::hypot(cfg_.mag_heading_sigma_rad, drift), drift,
-          dated ? HeadingSource::MagnetometerModelDeclination : HeadingSource::MagnetometerUndatedModel};
+          dated ? HeadingSource::MagnetometerModelDeclination : HeadingSource::MagnetometerUndatedModel, f.total_uT,
+          f.inclination_rad};
 }
 
-bool CoarseAlignment::field_recognised(const Eigen::Vector3d& m_level, const GnssObservation& z) {
-  if (cfg_.declination_known || !cfg_.use_geomagnetic_model) return true;
+bool CoarseAlignment::field_recognised(const Eigen::Vector3d& m_level, const FieldDeclination& d) {
+  if (!std::isfinite(d.model_total_uT)) return true;  // the model was not consulted
   // Not the Earth's field as the model knows it: an offset of tens of uT turns
   // the horizontal field by any angle, so no sigma makes its heading honest.
-  const geomag::GeomagneticField f = geomag::geomagnetic_field(z.lat_rad, z.lon_rad, z.h_m, model_year(z));
   const double dip = std::atan2(m_level.z(), m_level.head<2>().norm());
-  field_ratio_ = m_level.norm() / f.total_uT;
-  dip_difference_rad_ = dip - f.inclination_rad;
+  field_ratio_ = m_level.norm() / d.model_total_uT;
+  dip_difference_rad_ = dip - d.model_inclination_rad;
   return std::abs(field_ratio_ - 1.0) <= cfg_.geomag_max_field_ratio &&
          std::abs(dip_difference_rad_) <= cfg_.geomag_max_dip_rad;
 }
@@ -213,7 +214,7 @@ bool CoarseAlignment::with_field_heading(const GnssObservation& z, InMotionSolut
   InMotionSolution c = s;
   if (!update_with_field_heading(c.q_nb, c.att_cov_rad2, last_mag_b_uT_, d.rad, sigma)) return false;
   // The field is checked against the model at the updated tilt (in NED: levelled, its strength and dip).
-  if (!field_recognised(c.q_nb * last_mag_b_uT_, z)) return false;
+  if (!field_recognised(c.q_nb * last_mag_b_uT_, d)) return false;
   c.att_sigma_rad = c.att_cov_rad2.diagonal().cwiseMax(0.0).cwiseSqrt();
   use_declination(d, out);
   s = c;

@@ -174,16 +174,19 @@ class CoarseAlignment {
   void check_rest(const GnssObservation& z);
   /// The declination at the fix z: given, or the model's (without a date, at
   /// the middle of its span, its drift to either end in the sigma), or none
-  /// (0, wide sigma) with the model switched off.
+  /// (0, wide sigma) with the model switched off; with the model's field
+  /// strength and inclination there when it was consulted (NaN otherwise).
   struct FieldDeclination {
     double rad = 0.0, sigma_rad = 0.0, drift_rad = 0.0;
     HeadingSource source = HeadingSource::MagnetometerNoDeclination;
+    double model_total_uT = NAN, model_inclination_rad = NAN;
   };
   FieldDeclination declination_at(const GnssObservation& z) const;
   /// Whether a field measured in the levelled frame is the Earth's as the
-  /// model has it at z (strength and dip; recorded for the result). False:
-  /// its heading may be off by any angle. True when the model is not consulted.
-  bool field_recognised(const Eigen::Vector3d& m_level_uT, const GnssObservation& z);
+  /// model has it where `d` was taken (strength and dip; recorded for the
+  /// result). False: its heading may be off by any angle. True when the model
+  /// was not consulted.
+  bool field_recognised(const Eigen::Vector3d& m_level_uT, const FieldDeclination& d);
   /// The declination's source and value into the result.
   void use_declination(const FieldDeclination& d, AlignmentResult& out) const;
   /// The last field check against the model (NaN: none), kept for the result
