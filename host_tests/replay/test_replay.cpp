@@ -164,17 +164,13 @@ TEST(Replay, MagnetometerHardIronIsEstimatedAndHeadingStaysRight) {
                       "--quiet", "--out", out}).exit_code, 0);
   const auto s = read_json(out + "/summary.json");
   const double truth[3] = {15.0, -10.0, 8.0};
-  bool found = false;
-  for (const auto& e : s["effects"]) {
-    if (e["name"] != "mag_hard_iron") continue;
-    found = true;
-    for (std::size_t i = 0; i < 3; ++i) {
-      // 0.4 uT sensor noise, averaged over ~5000 updates, but tied to the heading
-      // and the Earth-field estimate (separable only through turns): 1 uT. Measured: 0.4.
-      EXPECT_NEAR(e["estimate"][i].get<double>(), truth[i], 1.0) << "axis " << i;
-    }
+  const auto hard_iron = summary_effect(s, "mag_hard_iron");
+  EXPECT_FALSE(hard_iron.is_null()) << "mag_hard_iron is a state whenever the magnetometer is fused";
+  for (std::size_t i = 0; i < 3 && !hard_iron.is_null(); ++i) {
+    // 0.4 uT sensor noise, averaged over ~5000 updates, but tied to the heading
+    // and the Earth-field estimate (separable only through turns): 1 uT. Measured: 0.4.
+    EXPECT_NEAR(hard_iron["estimate"][i].get<double>(), truth[i], 1.0) << "axis " << i;
   }
-  EXPECT_TRUE(found) << "mag_hard_iron is a state whenever the magnetometer is fused";
   // At rest the field, 20 uT of hard iron on the Earth's, is not the Earth's
   // as the World Magnetic Model knows it (strength or dip off): its heading
   // could be off by any angle, so none is taken from it; the heading comes
@@ -295,17 +291,14 @@ TEST(Replay, AModelFilesGSensitivityIsNotCountedTwiceAtRest) {
   const auto s = read_json(out + "/summary.json");
   EXPECT_TRUE(s["alignment"]["at_rest"].get<bool>());
   const auto truth = read_json(hidden)["imu_error_model"]["gyro"]["turn_on_bias"];
-  for (const auto& e : s["effects"]) {
-    if (e["name"] != "gyro_bias") continue;
-    for (std::size_t i = 0; i < 3; ++i) {
-      // The rest measures the bias to ~1e-4 rad/s; the flight's own walk
-      // moves it by less: measured 0.05-0.25e-3 off. Counted twice, G f was
-      // 5.7e-3 rad/s about z, and 5 minutes of flight left 2.3e-3 of it.
-      EXPECT_NEAR(e["estimate"][i].get<double>(), truth[i].get<double>(), 1e-3) << "axis " << i;
-    }
-    return;
+  const auto e = summary_effect(s, "gyro_bias");
+  ASSERT_FALSE(e.is_null()) << "no gyro_bias in summary.json's effects";
+  for (std::size_t i = 0; i < 3; ++i) {
+    // The rest measures the bias to ~1e-4 rad/s; the flight's own walk
+    // moves it by less: measured 0.05-0.25e-3 off. Counted twice, G f was
+    // 5.7e-3 rad/s about z, and 5 minutes of flight left 2.3e-3 of it.
+    EXPECT_NEAR(e["estimate"][i].get<double>(), truth[i].get<double>(), 1e-3) << "axis " << i;
   }
-  ADD_FAILURE() << "no gyro_bias in summary.json's effects";
 }
 
 // "GNSS alone" is the yardstick every replay prints. It placed each fix at

@@ -62,15 +62,12 @@ TEST(RestLevelling, ACrossAxisTermTheLevellingTookForATiltIsLearntInFlightNotAtR
   // unit has them, within 3 sigma, and the sigma not claiming more than the
   // error shows (measured -17.1 +- 2.1 and 25.5 +- 2.0 mrad).
   const auto s = read_json(out + "/summary.json");
-  for (const auto& e : s["effects"]) {
-    if (e["name"] != "accel_misalign") continue;
-    const double xz = e["estimate"][1].get<double>(), yz = e["estimate"][3].get<double>();
-    const double sxz = e["sigma"][1].get<double>(), syz = e["sigma"][3].get<double>();
-    EXPECT_LT(std::abs(xz - (-0.020)), 3.0 * sxz) << xz << " +- " << sxz;
-    EXPECT_LT(std::abs(yz - 0.025), 3.0 * syz) << yz << " +- " << syz;
-    return;
-  }
-  ADD_FAILURE() << "summary.json has no accel_misalign estimate";
+  const auto e = summary_effect(s, "accel_misalign");
+  ASSERT_FALSE(e.is_null()) << "summary.json has no accel_misalign estimate";
+  const double xz = e["estimate"][1].get<double>(), yz = e["estimate"][3].get<double>();
+  const double sxz = e["sigma"][1].get<double>(), syz = e["sigma"][3].get<double>();
+  EXPECT_LT(std::abs(xz - (-0.020)), 3.0 * sxz) << xz << " +- " << sxz;
+  EXPECT_LT(std::abs(yz - 0.025), 3.0 * syz) << yz << " +- " << syz;
 }
 
 // The gyro's twin: at rest a g-sensitivity's column along gravity (G_xz,
@@ -91,15 +88,12 @@ TEST(RestLevelling, AGSensitivityTheRestHidInTheGyroBiasIsLearntFromTheLoadFacto
   // Row-major: xz, yz, zz are components 2, 5, 8. Measured -0.176 +- 0.056,
   // 0.088 +- 0.052, 0.197 +- 0.078 deg/s/g: each within 3 sigma of the unit's.
   const std::pair<std::size_t, double> column_z[] = {{2, -0.2 * k}, {5, 0.1 * k}, {8, 0.25 * k}};
-  for (const auto& e : s["effects"]) {
-    if (e["name"] != "gyro_g_sensitivity") continue;
-    for (const auto& [i, truth] : column_z) {
-      const double v = e["estimate"][i].get<double>(), sg = e["sigma"][i].get<double>();
-      EXPECT_LT(std::abs(v - truth), 3.0 * sg) << "component " << i << ": " << v / k << " +- " << sg / k << " deg/s/g";
-    }
-    return;
+  const auto e = summary_effect(s, "gyro_g_sensitivity");
+  ASSERT_FALSE(e.is_null()) << "summary.json has no gyro_g_sensitivity estimate";
+  for (const auto& [i, truth] : column_z) {
+    const double v = e["estimate"][i].get<double>(), sg = e["sigma"][i].get<double>();
+    EXPECT_LT(std::abs(v - truth), 3.0 * sg) << "component " << i << ": " << v / k << " +- " << sg / k << " deg/s/g";
   }
-  ADD_FAILURE() << "summary.json has no gyro_g_sensitivity estimate";
 }
 
 // Along gravity the rest measures a sum too: the bias and g times the z
@@ -117,14 +111,11 @@ TEST(RestLevelling, AZScaleTheRestGaveTheBiasIsLearntFromTheLoadFactor) {
   // each when both start independent: 1.4 % measured, so 0.5 of the prior.
   EXPECT_GT(nav_value_after(out + "/nav.csv", "sigma_accel_scale_z", 10.0), 0.5 * 0.02);
   const auto s = read_json(out + "/summary.json");
-  for (const auto& e : s["effects"]) {
-    if (e["name"] != "accel_scale") continue;
-    // Measured 0.996 +- 0.161 %: within 3 sigma of the unit's 1 %.
-    const double z = e["estimate"][2].get<double>(), sz = e["sigma"][2].get<double>();
-    EXPECT_LT(std::abs(z - 0.01), 3.0 * sz) << z << " +- " << sz;
-    return;
-  }
-  ADD_FAILURE() << "summary.json has no accel_scale estimate";
+  const auto e = summary_effect(s, "accel_scale");
+  ASSERT_FALSE(e.is_null()) << "summary.json has no accel_scale estimate";
+  // Measured 0.996 +- 0.161 %: within 3 sigma of the unit's 1 %.
+  const double z = e["estimate"][2].get<double>(), sz = e["sigma"][2].get<double>();
+  EXPECT_LT(std::abs(z - 0.01), 3.0 * sz) << z << " +- " << sz;
 }
 
 }  // namespace
