@@ -109,6 +109,12 @@ struct DropLeadingSeconds {
   double seconds = 0.0;
 };
 
+/// The part before a reboot: every line with a time at or after t0 + seconds
+/// removed (t0 the first imu.csv `t`).
+struct KeepLeadingSeconds {
+  double seconds = 0.0;
+};
+
 /// A live stream's clock glitch: the first imu.csv row at or after `at_s`
 /// gets the time of the row before it (Repeat), or that time minus
 /// `step_back_s` (Backwards). Breaks the contract's "strictly increasing" on
@@ -136,7 +142,7 @@ struct ImuBiasShift {
 };
 
 using Fault = std::variant<GnssPositionJump, GnssGarbage, GnssOutage, ImuClip, ImuGap, ImuDropMagFirstRows,
-                           DropLeadingSeconds, ImuTimeGlitch, ImuNonFinite, ImuBiasShift>;
+                           DropLeadingSeconds, KeepLeadingSeconds, ImuTimeGlitch, ImuNonFinite, ImuBiasShift>;
 
 /// What one fault did: lines (rows) it rewrote and lines it removed, over all files.
 struct FaultEffect {

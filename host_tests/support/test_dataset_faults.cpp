@@ -130,6 +130,24 @@ class DatasetFaults : public ::testing::Test {
   }
   static DatasetTimes times() { return dataset_times(flight_->dir.path()); }
   void expect_copied(const char* f) const { EXPECT_EQ(read_file(dst(f)), read_file(src(f))) << f; }
+  /// After a cut of every file at `cut`: each file holds its header and
+  /// exactly the original lines on the kept side (from the cut on, or before
+  /// it); the lines removed over all files.
+  std::size_t expect_cut_at(double cut, bool keep_before) const {
+    std::size_t removed = 0;
+    for (const char* f : {"imu.csv", "gps.nmea", "truth.csv"}) {
+      const auto before = lines_of(src(f)), after = lines_of(dst(f));
+      const bool csv = std::string(f) != "gps.nmea";
+      std::vector<std::string> expected;
+      if (csv) expected.push_back(before[0]);
+      for (const auto& l : before)
+        if (keep_before ? time_of(l) < cut : time_of(l) >= cut) expected.push_back(l);
+      EXPECT_EQ(after, expected) << f;
+      EXPECT_GT(after.size(), csv ? 1u : 0u) << f;
+      removed += before.size() - after.size();
+    }
+    return removed;
+  }
 
   static inline std::unique_ptr<SimRun> flight_;
   TempDir out_;
@@ -447,27 +465,23 @@ TEST_F(DatasetFaults, DroppedMagnetometerRowsHaveEmptyMagFields) {
 TEST_F(DatasetFaults, DropLeadingSecondsStartsEveryFileAfterTheCut) {
   const double cut = times().imu.first_s + 42.5;
   const auto effects = inject({DropLeadingSeconds{42.5}});
-  std::size_t removed = 0;
-  for (const char* f : {"imu.csv", "gps.nmea", "truth.csv"}) {
-    const auto before = lines_of(src(f)), after = lines_of(dst(f));
-    const bool csv = std::string(f) != "gps.nmea";
-    // The cut keeps the header and exactly the original lines from the cut on.
-    std::vector<std::string> expected;
-    if (csv) expected.push_back(before[0]);
-    for (const auto& l : before)
-      if (time_of(l) >= cut) expected.push_back(l);
-    EXPECT_EQ(after, expected) << f;
-    ASSERT_GT(after.size(), csv ? 1u : 0u);
-    EXPECT_GE(time_of(after[csv ? 1 : 0]), cut) << f;
-    removed += before.size() - after.size();
-  }
-  EXPECT_EQ(effects.at(0).removed, removed);
+  EXPECT_EQ(effects.at(0).removed, expect_cut_at(cut, false));
   EXPECT_GE(load_rows(dst("imu.csv"), dataset::kImuSchema).front().t(), cut);
   EXPECT_GE(load_rows(dst("truth.csv"), dataset::kTruthSchema).front().t(), cut);
   const auto fixes = read_fixes(dst("gps.nmea"));
   ASSERT_FALSE(fixes.empty());
   EXPECT_GE(fixes.front().arrival_s, cut);
   expect_copied("meta.json");
+}
+
+TEST_F(DatasetFaults, KeepLeadingSecondsEndsEveryFileBeforeTheCut) {
+  const double cut = times().imu.first_s + 42.5;
+  const auto effects = inject({KeepLeadingSeconds{42.5}});
+  EXPECT_EQ(effects.at(0).removed, expect_cut_at(cut, true));
+  EXPECT_LT(load_rows(dst("imu.csv"), dataset::kImuSchema).back().t(), cut);
+  const auto fixes = read_fixes(dst("gps.nmea"));
+  ASSERT_FALSE(fixes.empty());
+  EXPECT_LT(fixes.back().arrival_s, cut);
 }
 
 TEST_F(DatasetFaults, SeveralFaultsApplyInTheirOrder) {

@@ -23,6 +23,7 @@ FaultEffect apply(const ImuClip& f, DatasetText& d);
 FaultEffect apply(const ImuGap& f, DatasetText& d);
 FaultEffect apply(const ImuDropMagFirstRows& f, DatasetText& d);
 FaultEffect apply(const DropLeadingSeconds& f, DatasetText& d);
+FaultEffect apply(const KeepLeadingSeconds& f, DatasetText& d);
 FaultEffect apply(const ImuTimeGlitch& f, DatasetText& d);
 FaultEffect apply(const ImuNonFinite& f, DatasetText& d);
 FaultEffect apply(const ImuBiasShift& f, DatasetText& d);

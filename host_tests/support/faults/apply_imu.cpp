@@ -96,17 +96,26 @@ FaultEffect apply(const ImuBiasShift& f, DatasetText& d) {
   return e;
 }
 
-FaultEffect apply(const DropLeadingSeconds& f, DatasetText& d) {
+namespace {
+
+/// Every file cut at t0 + seconds (t0 the first imu.csv time): the lines before
+/// the cut removed (keep_before false) or those from it on (true).
+FaultEffect cut_every_file(double seconds, bool keep_before, DatasetText& d) {
   std::optional<double> t0;
   for (std::size_t i = 1; i < d.imu.size() && !t0; ++i) t0 = leading_number(d.imu[i].text);
   if (!t0) return {};
-  const double cut = *t0 + f.seconds;
-  auto before_cut = [&](double t) { return t < cut; };
+  const double cut = *t0 + seconds;
+  auto drop = [&](double t) { return keep_before ? t >= cut : t < cut; };
   FaultEffect e;
-  e.removed += remove_timed_lines(d.imu, before_cut);  // the header has no readable time: it stays
-  if (d.gps) e.removed += remove_timed_lines(*d.gps, before_cut);
-  if (d.truth) e.removed += remove_timed_lines(*d.truth, before_cut);
+  e.removed += remove_timed_lines(d.imu, drop);  // the header has no readable time: it stays
+  if (d.gps) e.removed += remove_timed_lines(*d.gps, drop);
+  if (d.truth) e.removed += remove_timed_lines(*d.truth, drop);
   return e;
 }
+
+}  // namespace
+
+FaultEffect apply(const DropLeadingSeconds& f, DatasetText& d) { return cut_every_file(f.seconds, false, d); }
+FaultEffect apply(const KeepLeadingSeconds& f, DatasetText& d) { return cut_every_file(f.seconds, true, d); }
 
 }  // namespace sinu::test::faults
