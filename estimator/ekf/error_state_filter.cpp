@@ -634,6 +634,11 @@ void ErrorStateFilter::apply_priors() {
   for (std::size_t e = 0; e < kEffectCount; ++e) apply_prior(static_cast<Effect>(e));
 }
 
+void ErrorStateFilter::set_prior(Effect e, const EffectPrior& prior) {
+  tuning_.prior[static_cast<std::size_t>(e)] = prior;
+  apply_prior(e);
+}
+
 void ErrorStateFilter::apply_prior(Effect e) {
   const EffectPrior& p = tuning_.prior[static_cast<std::size_t>(e)];
   if (!p.given || !layout_.has(e)) return;

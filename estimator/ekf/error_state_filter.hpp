@@ -68,6 +68,9 @@ class ErrorStateFilter {
   /// The tuning's given priors (EffectTuning::prior) for the active effects:
   /// their values and sigmas (after set_lever_arm / set_gps_latency, which they override).
   void apply_priors();
+  /// Replaces effect e's given prior (a restart's saved state) and applies it
+  /// now if e is active; a deferred e takes it when switched on.
+  void set_prior(Effect e, const EffectPrior& prior);
   double effect_sigma(Effect e, Eigen::Index i) const;
   /// An effect's values (states or configured), read through its components.
   EffectView view(Effect e) const { return {value_.data() + kEffectValueOffset[static_cast<std::size_t>(e)]}; }

@@ -87,6 +87,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   predict_.clear();
   counters_ = {};
   nav_ = {};
+  warm_ = {};
   filter_.init(layout_of(cfg), cfg.noise, cfg.tuning, cfg.initial);
   filter_.set_lever_arm(cfg.lever_arm_b_m);
   filter_.set_gps_latency(cfg.gps_latency_s);
@@ -299,13 +300,15 @@ void Navigator::align(const ImuSample& s, double dt) {
     nav_ = res.nav;
     filter_.seed_attitude(res.att_sigma_rad);
     filter_.reset_block(filter_.layout().vel, res.vel_sigma_m_s);
-    filter_.set_reference_temperature(res.temp_ref_degC);
+    // A restart's biases refer to the temperature they were learnt at.
+    filter_.set_reference_temperature(warm_.given ? warm_.temp_ref_degC : res.temp_ref_degC);
     // The rate was measured at the rest's specific force, or in motion on the
     // window's average, about gravity's.
     const Eigen::Vector3d f_b = res.at_rest ? res.rest_specific_force_b_m_s2
                                             : Eigen::Vector3d(nav_.C_nb().transpose() *
                                                               Eigen::Vector3d(0.0, 0.0, -wgs84::kStandardGravity));
-    filter_.seed_gyro_bias(res.gyro_bias_rad_s, f_b, res.gyro_bias_sigma_rad_s);
+    if (!warm_tighter(Effect::GyroBias, res.gyro_bias_sigma_rad_s))
+      filter_.seed_gyro_bias(res.gyro_bias_rad_s, f_b, res.gyro_bias_sigma_rad_s);
     if (res.at_rest) {
       // Floor: normal gravity against the site's true gravity (anomalies ~1e-3 g).
       filter_.correlate_gyro_bias_at_rest(nav_, res.rest_specific_force_b_m_s2);
@@ -313,6 +316,22 @@ void Navigator::align(const ImuSample& s, double dt) {
                                       std::max(res.rest_specific_force_sigma_m_s2, 0.01));
     }
     filter_.set_gps_bias_sigma(z.sigma_ned_m, 0.0, white_scale(z));
+    // The receiver's correlated error as the unit knew it before the restart,
+    // on each axis where that says more than this fix's level (the GM's
+    // stationary sigma): the fix below then places the INS where the fix
+    // minus that error says. (A saved sigma above the level is no knowledge:
+    // taken anyway, the real quadcopter's bias state, 5.8 m wide where its
+    // fixes now said 0.3 m, took up 10 m of the INS's drift.)
+    if (warm_.given && warm_.effects[static_cast<std::size_t>(Effect::GpsPositionBias)].given) {
+      EffectPrior p = warm_.effects[static_cast<std::size_t>(Effect::GpsPositionBias)];
+      const Eigen::Vector3d level = filter_.gps_bias_sigma_ned_m();
+      for (std::size_t i = 0; i < 3; ++i) {
+        if (p.sigma[i] < level(static_cast<Eigen::Index>(i))) continue;
+        p.value[i] = 0.0;
+        p.sigma[i] = level(static_cast<Eigen::Index>(i));
+      }
+      filter_.set_prior(Effect::GpsPositionBias, p);
+    }
     seed_position_on_fix(z, s.t_s - (z.arrival_s - latency));
     recovery_.restart(s.t_s);
     vertical_.restart();
@@ -325,6 +344,83 @@ void Navigator::align(const ImuSample& s, double dt) {
   // Not aligned yet: why the field gave no heading, should it stay so.
   alignment_result_.field_ratio = alignment_.field_ratio();
   alignment_result_.dip_difference_rad = alignment_.dip_difference_rad();
+}
+
+WarmStart Navigator::warm_state() const {
+  WarmStart w;
+  if (!aligned()) return w;
+  w.given = true;
+  const StateLayout& L = filter_.layout();
+  for (std::size_t e = 0; e < kEffectCount; ++e) {
+    const auto effect = static_cast<Effect>(e);
+    // The Earth field's state is the invariant error of this solution's
+    // attitude; a restart starts it again from a sample (start_mag_field).
+    if (!L.has(effect) || effect == Effect::MagEarthField) continue;
+    EffectPrior& p = w.effects[e];
+    p.given = true;
+    for (Eigen::Index i = 0; i < kEffectDims[e]; ++i) {
+      p.value[static_cast<std::size_t>(i)] = filter_.effect(effect, i);
+      p.sigma[static_cast<std::size_t>(i)] = filter_.effect_sigma(effect, i);
+    }
+  }
+  w.temp_ref_degC = filter_.reference_temperature();
+  w.gps_bias_level_ned_m = filter_.gps_bias_sigma_ned_m();
+  w.gnss_velocity_sigma_m_s = vel_noise_started_ ? vel_noise_.sigma() : 0.0;
+  w.mag_sigma_uT = mag_started_ ? mag_noise_.sigma() : 0.0;
+  w.gnss_white_scale = gnss_white_scale();
+  w.gnss_position_scale = gnss_position_scale();
+  return w;
+}
+
+bool Navigator::warm_start(const WarmStart& saved, double age_s) {
+  if (!saved.given || aligned()) return false;
+  warm_ = aged(saved, age_s, filter_.tuning(), filter_.noise());
+  const StateLayout& L = filter_.layout();
+  for (std::size_t e = 0; e < kEffectCount; ++e) {
+    const auto effect = static_cast<Effect>(e);
+    EffectPrior& w = warm_.effects[e];
+    if (!w.given) continue;
+    if (!L.carries(effect)) {  // this unit is configured without it
+      w.given = false;
+      continue;
+    }
+    // Per component, the saved value where it is tighter than the prior this
+    // unit would start from (a model file's, else the vocabulary's); a saved
+    // sigma that has grown past it is no knowledge.
+    const EffectPrior& cold = filter_.tuning().prior[e];
+    for (std::size_t k = 0; k < static_cast<std::size_t>(kEffectDims[e]); ++k) {
+      const double cold_sigma = cold.given ? cold.sigma[k] : filter_.tuning().initial_sigma[e];
+      if (w.sigma[k] < cold_sigma) continue;
+      w.value[k] = cold.given ? cold.value[k] : filter_.effect(effect, static_cast<Eigen::Index>(k));
+      w.sigma[k] = cold_sigma;
+    }
+    filter_.set_prior(effect, w);
+  }
+  // Learnt noise levels, where this unit learns them (a sigma the user gave stays).
+  if (cfg_.gnss_velocity_noise.enabled && warm_.gnss_velocity_sigma_m_s > 0.0) {
+    vel_noise_.configure(cfg_.gnss_velocity_noise, warm_.gnss_velocity_sigma_m_s);
+    vel_noise_started_ = true;
+  }
+  if (cfg_.mag_noise.enabled && warm_.mag_sigma_uT > 0.0) mag_noise_.configure(cfg_.mag_noise, warm_.mag_sigma_uT);
+  if (cfg_.gnss_white_scale.enabled && warm_.gnss_white_scale.minCoeff() > 0.0) {
+    NoiseAdapterConfig white = cfg_.gnss_white_scale;
+    white.max_sigma = std::min(white.max_sigma, 1.0 / std::sqrt(1.0 - cfg_.tuning.gps_bias_variance_fraction));
+    white_h_.configure(white, warm_.gnss_white_scale.x());
+    white_v_.configure(white, warm_.gnss_white_scale.y());
+  }
+  if (cfg_.gnss_position_scale.enabled && warm_.gnss_position_scale.minCoeff() > 0.0) {
+    pos_scale_h_.configure(cfg_.gnss_position_scale, warm_.gnss_position_scale.x());
+    pos_scale_v_.configure(cfg_.gnss_position_scale, warm_.gnss_position_scale.y());
+  }
+  return true;
+}
+
+bool Navigator::warm_tighter(Effect e, double sigma) const {
+  const EffectPrior& p = warm_.effects[static_cast<std::size_t>(e)];
+  if (!warm_.given || !p.given || !filter_.layout().has(e)) return false;
+  for (Eigen::Index i = 0; i < kEffectDims[static_cast<std::size_t>(e)]; ++i)
+    if (!(p.sigma[static_cast<std::size_t>(i)] < sigma)) return false;
+  return true;
 }
 
 void Navigator::widen_for_imu_errors(const ImuSample& s, double dt) {

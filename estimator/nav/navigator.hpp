@@ -35,6 +35,7 @@
 #include "estimator/nav/noise_adapter.hpp"
 #include "estimator/nav/stillness.hpp"
 #include "estimator/nav/vehicle_detector.hpp"
+#include "estimator/nav/warm_start.hpp"
 #include "estimator/nav/velocity_history.hpp"
 #include "estimator/nav/vertical_check.hpp"
 #include "estimator/prefilter/imu_prefilter.hpp"
@@ -249,6 +250,15 @@ class Navigator {
   Eigen::Vector2d gnss_position_scale() const { return {pos_scale_h_.sigma(), pos_scale_v_.sigma()}; }
   /// The learnt factor on the white part of stated (GST) sigmas, horizontal and vertical.
   Eigen::Vector2d gnss_white_scale() const { return {white_h_.sigma(), white_v_.sigma()}; }
+  /// What this navigator has learnt, for a restart (warm_start.hpp): given once aligned.
+  WarmStart warm_state() const;
+  /// A restart: `saved`, `age_s` old, becomes the priors of the effects this
+  /// navigator carries and its learnt noise levels; the alignment keeps the
+  /// saved turn-on biases where they are tighter than its own, and the
+  /// receiver's correlated error. Only before the alignment: false after.
+  bool warm_start(const WarmStart& saved, double age_s);
+  /// The restart's state in use (given = false without one).
+  const WarmStart& warm() const { return warm_; }
 
  private:
   void push_filtered(ImuSample s);
@@ -297,6 +307,8 @@ class Navigator {
   Eigen::Vector3d white_scale(const GnssObservation& z) const;
   void update_health(double t_now, double dt);
   void emit();
+  /// A restart's saved effect e is tighter than `sigma` in every component.
+  bool warm_tighter(Effect e, double sigma) const;
 
   NavigatorConfig cfg_;
   NavObserver* observer_ = nullptr;
@@ -360,6 +372,7 @@ class Navigator {
   bool in_timeout_ = false;
   NavOutput out_;
   NavCounters counters_;
+  WarmStart warm_;  // a restart's saved state, aged (warm_start)
 };
 
 }  // namespace sinu::est

@@ -113,6 +113,10 @@ void FlyLoop::report(hal::TimeNs now_ns) {
   char line[512];
   health_line(h, line, sizeof line);
   std::fprintf(config_.health, "%s\n", line);
+  if (unit_.state_note_version() != state_note_printed_) {  // the state file: used, not, not written
+    state_note_printed_ = unit_.state_note_version();
+    std::fprintf(config_.health, "sinu fly: %s\n", unit_.state_note().c_str());
+  }
   std::fflush(config_.health);
   flags_ = 0;
 }

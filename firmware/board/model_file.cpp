@@ -1,6 +1,7 @@
 #include "firmware/board/model_file.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -64,8 +65,7 @@ bool read_model_file(const std::string& path, est::EffectSet& effects,
   return true;
 }
 
-bool write_model_file(const std::string& path, const std::vector<ModelEffect>& effects, double imu_latency_s,
-                      const std::string& source, std::string& error) {
+nlohmann::json model_json(const std::vector<ModelEffect>& effects, double imu_latency_s, const std::string& source) {
   nlohmann::json j;
   j["source"] = source;
   if (imu_latency_s > 0.0) j["imu_latency_s"] = imu_latency_s;
@@ -74,13 +74,29 @@ bool write_model_file(const std::string& path, const std::vector<ModelEffect>& e
     j["effects"][est::spec(m.effect).name] = {{"estimate", m.estimate}, {"sigma", m.sigma},
                                               {"unit", "state units (see effect_vocabulary.hpp)"}};
   }
-  std::ofstream out(path);
-  out << j.dump(2) << "\n";
-  if (!out) {
-    error = path + ": cannot write the model file";
+  return j;
+}
+
+bool write_json_file(const std::string& path, const nlohmann::json& j, std::string& error) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << j.dump(2) << "\n";
+    if (!out) {
+      error = path + ": cannot write (" + tmp + ")";
+      return false;
+    }
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    error = path + ": cannot replace it with " + tmp;
     return false;
   }
   return true;
+}
+
+bool write_model_file(const std::string& path, const std::vector<ModelEffect>& effects, double imu_latency_s,
+                      const std::string& source, std::string& error) {
+  return write_json_file(path, model_json(effects, imu_latency_s, source), error);
 }
 
 }  // namespace sinu::board

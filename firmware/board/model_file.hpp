@@ -10,6 +10,7 @@
 // Estimates are in the estimator's state units (effect_vocabulary.hpp: scale
 // [-], misalignment [rad], g-sensitivity [rad/s per m/s^2], ...), components
 // in its order.
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,14 @@ bool read_model_file(const std::string& path, est::EffectSet& effects,
 inline double imu_latency_in_use(double configured_s, double model_file_s) {
   return configured_s > 0.0 ? configured_s : model_file_s;
 }
+
+/// The model file's JSON (what write_model_file writes): a state file
+/// (state_file.hpp) is one with more keys.
+nlohmann::json model_json(const std::vector<ModelEffect>& effects, double imu_latency_s, const std::string& source);
+
+/// Writes `j` to `path` whole or not at all (a temporary file renamed over it:
+/// a power cut leaves the old file). False with `error` naming the file.
+bool write_json_file(const std::string& path, const nlohmann::json& j, std::string& error);
 
 /// Writes the effects (estimates and sigmas) as a model file, and the IMU's
 /// latency when it is above zero.

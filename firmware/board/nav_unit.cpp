@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <numbers>
 
 #include "drivers/imu/icm20948_registers.hpp"
@@ -86,7 +88,52 @@ bool NavUnit::init(const NavUnitConfig& c, est::NavObserver* observer, std::stri
   cfg.horizon_s = std::max(0.3, c.gps_latency_s + 0.25);
   nav_ = std::make_unique<est::Navigator>();
   nav_->init(cfg, observer, correction_ ? correction_.get() : prefilter_.get());
+  warm_pending_ = state_write_failed_ = false;
+  last_state_save_t_s_ = -1e300;
+  state_note_.clear();
+  if (!c.state_path.empty()) {
+    std::string state_error;
+    if (!std::ifstream(c.state_path)) {
+      state_note_ = c.state_path + ": no state file yet: a cold start";
+    } else if (!read_state_file(c.state_path, saved_, state_error)) {
+      state_note_ = state_error + ": a cold start";  // a bad file must not keep the unit from flying
+    } else {
+      warm_pending_ = true;
+    }
+    if (!state_note_.empty()) ++state_note_version_;
+  }
   return true;
+}
+
+void NavUnit::decide_warm_start(std::int64_t fix_utc_ms) {
+  warm_pending_ = false;
+  const double age_s = static_cast<double>(fix_utc_ms - saved_.saved_utc_ms) * 1e-3;
+  char buf[160];
+  if (!(age_s >= 0.0 && age_s <= cfg_.state_max_age_s)) {
+    std::snprintf(buf, sizeof buf, ": saved %.0f s before the first fix (more than %.0f s, or after it): a cold start",
+                  age_s, cfg_.state_max_age_s);
+  } else if (!nav_->warm_start(saved_.warm, age_s)) {
+    std::snprintf(buf, sizeof buf, ": the navigator was aligned before the first dated fix: a cold start");
+  } else {
+    std::snprintf(buf, sizeof buf, ": a warm start from the state saved %.1f s before the first fix", age_s);
+  }
+  state_note_ = cfg_.state_path + buf;
+  ++state_note_version_;
+}
+
+void NavUnit::save_state(bool final) {
+  if (state_write_failed_ || !nav_->aligned() || !have_fix_ || !fix_has_utc_) return;
+  const double t = nav_->nav().t_s;
+  if (!final && t - last_state_save_t_s_ < cfg_.state_period_s) return;
+  last_state_save_t_s_ = t;
+  const double latency = nav_->filter().gps_latency_s();
+  SavedState s{nav_->warm_state(), fix_utc_ms_ + std::llround((t - (fix_arrival_s_ - latency)) * 1000.0)};
+  std::string error;
+  if (!write_state_file(cfg_.state_path, s, error)) {
+    state_write_failed_ = true;  // said once; the unit flies on
+    state_note_ += (state_note_.empty() ? "" : "; ") + error + " (the state is not saved)";
+    ++state_note_version_;
+  }
 }
 
 bool NavUnit::observation(const drivers::GpsFix& fix, est::GnssObservation& z) const {
@@ -96,11 +143,14 @@ bool NavUnit::observation(const drivers::GpsFix& fix, est::GnssObservation& z) c
 bool NavUnit::push_fix(const drivers::GpsFix& fix) {
   est::GnssObservation z;
   if (!observation(fix, z)) return false;
+  const bool dated = fix.date.has_value();
+  const std::int64_t utc_ms = dated ? utc_epoch_ms(*fix.date, fix.utc_ms) : 0;
+  if (warm_pending_ && dated) decide_warm_start(utc_ms);  // before the fix can align the unit
   nav_->push_gnss(z);
   have_fix_ = true;
   fix_arrival_s_ = fix.arrival_s;
-  fix_has_utc_ = fix.date.has_value();
-  if (fix_has_utc_) fix_utc_ms_ = utc_epoch_ms(*fix.date, fix.utc_ms);
+  fix_has_utc_ = dated;
+  if (fix_has_utc_) fix_utc_ms_ = utc_ms;
   // GGA's: an epoch without one (RMC alone, fused north and east) keeps the last.
   if (fix.has_gga) {
     geoid_sep_m_ = fix.geoid_sep_m.value_or(0.0);

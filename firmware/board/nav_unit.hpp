@@ -17,6 +17,7 @@
 #include "estimator/prefilter/imu_prefilter.hpp"
 #include "firmware/board/nav_solution.hpp"
 #include "firmware/board/nav_unit_config.hpp"
+#include "firmware/board/state_file.hpp"
 
 namespace sinu::board {
 
@@ -34,15 +35,31 @@ class NavUnit {
   /// key at fault) otherwise.
   bool init(const NavUnitConfig& config, est::NavObserver* observer, std::string& error);
 
-  void push_imu(const est::ImuSample& sample) { nav_->push_imu(sample); }
-  void push_imu(const drivers::ImuSample& sample) { nav_->push_imu(to_estimator(sample)); }
+  void push_imu(const est::ImuSample& sample) {
+    nav_->push_imu(sample);
+    if (!cfg_.state_path.empty()) save_state(false);
+  }
+  void push_imu(const drivers::ImuSample& sample) { push_imu(to_estimator(sample)); }
   /// The fix as a GNSS observation (sigmas from GST or DOP); false when it has no usable position.
   bool observation(const drivers::GpsFix& fix, est::GnssObservation& z) const;
-  void push_gnss(const est::GnssObservation& z) { nav_->push_gnss(z); }
-  /// observation() and push_gnss(); false when the fix had no usable position.
+  /// observation() into the navigator, and the fix's time and receiver
+  /// fields kept; false when the fix had no usable position.
   bool push_fix(const drivers::GpsFix& fix);
-  /// End of data: processes what the navigator still holds.
-  void flush() { nav_->flush(); }
+  /// End of data: processes what the navigator still holds (and saves the state file).
+  void flush() {
+    nav_->flush();
+    if (warm_pending_) {
+      warm_pending_ = false;
+      state_note_ = cfg_.state_path + ": no fix with a date (RMC or ZDA) to tell the state's age by: a cold start";
+      ++state_note_version_;
+    }
+    if (!cfg_.state_path.empty()) save_state(true);
+  }
+  /// What became of the state file: read, used or not and why, written or
+  /// not; "" without one. For the user (stderr, summary.json).
+  const std::string& state_note() const { return state_note_; }
+  /// Changes whenever state_note() does (for a loop that prints it once).
+  int state_note_version() const { return state_note_version_; }
   /// What the outputs need of a navigator output: the solution in output
   /// units, its UTC (from the last fix's time of validity), the receiver's
   /// geoid separation, satellites and HDOP.
@@ -66,6 +83,16 @@ class NavUnit {
   std::int64_t fix_utc_ms_ = 0;
   double fix_arrival_s_ = 0.0, geoid_sep_m_ = 0.0, hdop_ = 99.99;
   int satellites_ = 0;
+  // The state file: the saved state until the first dated fix decides on it.
+  SavedState saved_;
+  bool warm_pending_ = false, state_write_failed_ = false;
+  double last_state_save_t_s_ = -1e300;
+  std::string state_note_;
+  int state_note_version_ = 0;
+  /// The first dated fix: the saved state used if young enough.
+  void decide_warm_start(std::int64_t fix_utc_ms);
+  /// Writes the state file when due (or now, `final`), once aligned and dated.
+  void save_state(bool final);
 };
 
 /// Milliseconds since 1970-01-01 UTC of a date and a time of day.

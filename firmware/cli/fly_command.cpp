@@ -151,6 +151,9 @@ void add_fly_command(CLI::App& app, Action& action) {
                "calib.json from sinu bench / sinu calibrate (navigation.calibration)");
   o->board.add(*cmd, "--model-file", [](FlyConfig& c) -> auto& { return c.navigation.model_file; },
                "Effects known from earlier flights, from sinu diagnose --apply (navigation.model_file)");
+  o->board.add(*cmd, "--state-file", [](FlyConfig& c) -> auto& { return c.navigation.state_file; },
+               "The unit's learnt state, saved every 5 s; a restart within 10 min starts from it "
+               "(navigation.state_file; \"\": none)");
   o->board.add(*cmd, "--model", [](FlyConfig& c) -> auto& { return c.navigation.model; }, "Sensor-error model: gm or ar")
       ->check(CLI::IsMember({"gm", "ar"}));
   o->board.add(*cmd, "--vehicle", [](FlyConfig& c) -> auto& { return c.navigation.vehicle; }, "air or ground")

@@ -192,6 +192,11 @@ void add_replay_command(CLI::App& app, Action& action) {
                   "Start the slower GPS of --gps-period at this dataset time [s] (every epoch before: the paper's "
                   "Table 5 slows the updates of an aligned, converged filter)");
   sub->add_option("--outage", c->outages, "GPS outages START:DURATION[,...] in the dataset's t [s]");
+  sub->add_option("--state-file", opt.unit.state_path,
+                  "The unit's state file, as `sinu fly` keeps it: read at the start (a restart: used when saved at "
+                  "most --state-max-age s before the first fix), written every few seconds once aligned");
+  sub->add_option("--state-max-age", opt.unit.state_max_age_s, "Oldest state file a restart uses [s]")
+      ->capture_default_str();
   sub->add_option("--nav-rate", c->nav_rate_hz, "nav.csv rows per second (0: every IMU sample)")->capture_default_str();
   sub->add_option("--out", c->out_dir, "Output folder")->required();
   sub->add_flag("--quiet", c->quiet, "Do not print the summary");

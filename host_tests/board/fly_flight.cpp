@@ -30,7 +30,8 @@ FlyFlight make_fly_flight(const TempDir& tmp, const std::string& name, int secon
 std::string write_fly_config(const TempDir& tmp, const std::string& name, const std::string& extra) {
   const std::string path = tmp.file(name + ".toml");
   std::ofstream out(path);
-  out << "[navigation]\ncalibration = \"\"\n\n[outputs.log]\nenabled = true\npath = \"" << tmp.file(name + "_nav.csv")
+  out << "[navigation]\ncalibration = \"\"\nstate_file = \"" << tmp.file(name + "_state.json")
+      << "\"\n\n[outputs.log]\nenabled = true\npath = \"" << tmp.file(name + "_nav.csv")
       << "\"\n\n" << extra;
   return path;
 }

@@ -52,7 +52,7 @@ TEST(FlyConfig, ShippedFileShowsEveryKey) {
   const toml::table file = toml::parse_file(kShipped);
   const std::string text = sinu::test::read_file(kShipped);
   const auto keys = sinu::board::fly_config_keys();
-  EXPECT_EQ(keys.size(), 46u);  // 9 imu, 5 gps, 12 navigation, 11 mavlink, 5 nmea, 2 log, 2 recording
+  EXPECT_EQ(keys.size(), 47u);  // 9 imu, 5 gps, 13 navigation, 11 mavlink, 5 nmea, 2 log, 2 recording
   for (const auto& k : keys) {
     SCOPED_TRACE(k.path);
     if (k.has_default) {

@@ -79,6 +79,7 @@ void read_sections(TomlReader& r, FlyConfig& c) {
   TomlSection nav = r.section("navigation");
   nav.text("calibration", c.navigation.calibration);
   nav.text("model_file", c.navigation.model_file);
+  nav.text("state_file", c.navigation.state_file);
   nav.choice("model", c.navigation.model, kModels);
   nav.text_list("effects", c.navigation.effects, effect_check);
   nav.text_list("without_effects", c.navigation.without_effects, without_effect_check);

@@ -42,6 +42,9 @@ struct FlyConfig {
     // A model file from `sinu diagnose --apply` (effects known from earlier
     // flights, with values); "": none.
     std::string model_file;
+    // The state file (state_file.hpp): saved every few seconds; a restart in
+    // the air (the companion computer rebooted) starts from it. "": none.
+    std::string state_file = "/var/lib/sinu/state.json";
     std::string model = "ar";               // gm, ar
     std::vector<std::string> effects;        // effect states added to the defaults
     std::vector<std::string> without_effects;  // defaults removed ("none": all of them)

@@ -41,6 +41,7 @@ bool nav_unit_config(const FlyConfig& c, NavUnitConfig& out, std::string& error)
   const FlyConfig::Navigation& n = c.navigation;  // fields not in sinu.toml keep `out`'s values
   out.calib_path = n.calibration;
   out.model_path = n.model_file;
+  out.state_path = n.state_file;
   if (n.model == "gm") out.calib.kind = est::NoiseModelKind::GaussMarkov;
   else if (n.model == "ar") out.calib.kind = est::NoiseModelKind::AutoRegressive;
   else return (error = "navigation.model must be gm or ar, not '" + n.model + "'"), false;

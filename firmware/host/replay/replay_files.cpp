@@ -99,6 +99,7 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
   sj["imu_samples"] = r.imu_samples;
   sj["duration_s"] = r.duration_s;
   sj["aligned"] = r.aligned;
+  sj["note"] = r.note;  // what the user must know ("" if nothing): dropped rows, the state file
   sj["aligned_at_s"] = r.aligned ? json(r.aligned_at_s) : json(nullptr);
   constexpr double kDeg = 180.0 / std::numbers::pi;
   if (r.aligned) {

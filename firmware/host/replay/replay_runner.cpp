@@ -159,7 +159,7 @@ class UnitFeed final : public ReplayFeed {
     }
     last_used_t_ = t_valid;
     ++gnss.used;
-    unit_.push_gnss(z);
+    unit_.push_fix(f);  // the fix's time too (the state file's age, the solution's UTC)
     if (z.has_height) metrics_.add_gnss({t_valid, z.lat_rad, z.lon_rad, z.h_m});  // "GNSS alone": the 3-D fixes
   }
 
@@ -256,6 +256,7 @@ bool run_replay(const ReplayOptions& opt, std::span<ReplayListener* const> liste
     return false;
   }
   result.note = source->note();
+  if (!unit.state_note().empty()) result.note += (result.note.empty() ? "" : "; ") + unit.state_note();
   result.source = source->counters();
   if (!result.source.first_anomaly.empty()) {  // survived, but the user must know
     result.note += (result.note.empty() ? "" : "; ") + std::to_string(result.source.time_anomalies) +

@@ -1,0 +1,33 @@
+#include "estimator/nav/warm_start.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sinu::est {
+
+WarmStart aged(const WarmStart& w, double age_s, const EffectTuning& tuning, const SensorNoise& noise) {
+  WarmStart out = w;
+  const double age = std::max(0.0, age_s);
+  for (std::size_t e = 0; e < kEffectCount; ++e) {
+    EffectPrior& p = out.effects[e];
+    if (!p.given) continue;
+    const auto n = static_cast<std::size_t>(kEffectDims[e]);
+    if (static_cast<Effect>(e) == Effect::GpsPositionBias) {
+      const double decay = std::exp(-age / tuning.gps_bias_tau_s);
+      for (std::size_t k = 0; k < n; ++k) {
+        const double level = w.gps_bias_level_ned_m(static_cast<Eigen::Index>(k));
+        p.value[k] *= decay;
+        p.sigma[k] = std::sqrt(p.sigma[k] * p.sigma[k] * decay * decay + level * level * (1.0 - decay * decay));
+      }
+      continue;
+    }
+    const Effect effect = static_cast<Effect>(e);
+    const double walk = effect == Effect::AccelBias  ? noise.accel_bias_walk
+                        : effect == Effect::GyroBias ? noise.gyro_bias_walk
+                                                     : tuning.random_walk[e];
+    for (std::size_t k = 0; k < n; ++k) p.sigma[k] = std::sqrt(p.sigma[k] * p.sigma[k] + walk * walk * age);
+  }
+  return out;
+}
+
+}  // namespace sinu::est

@@ -1,0 +1,83 @@
+#include "firmware/board/state_file.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "firmware/board/model_file.hpp"
+
+namespace sinu::board {
+
+namespace {
+
+/// `n` finite numbers at key `key` of `j` (absent: left as they are).
+bool optional_numbers(const nlohmann::json& j, const char* key, Eigen::Index n, double* out, const std::string& path,
+                      std::string& error) {
+  if (!j.contains(key)) return true;
+  const nlohmann::json& v = j[key];
+  const bool scalar = n == 1 && v.is_number();
+  if (!scalar && !(v.is_array() && v.size() == static_cast<std::size_t>(n))) {
+    error = path + ": " + key + ": expected " + std::to_string(n) + " number(s)";
+    return false;
+  }
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const nlohmann::json& x = scalar ? v : v[static_cast<std::size_t>(i)];
+    if (!x.is_number() || !std::isfinite(x.get<double>())) {
+      error = path + ": " + key + ": expected finite numbers";
+      return false;
+    }
+    out[i] = x.get<double>();
+  }
+  return true;
+}
+
+}  // namespace
+
+bool read_state_file(const std::string& path, SavedState& out, std::string& error) {
+  out = {};
+  est::EffectSet effects;
+  double imu_latency_s = 0.0;
+  if (!read_model_file(path, effects, out.warm.effects, imu_latency_s, error)) return false;
+  std::ifstream in(path);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!j.contains("saved_utc_ms") || !j["saved_utc_ms"].is_number_integer()) {
+    error = path + ": saved_utc_ms: expected an integer (ms since 1970-01-01 UTC); not a state file?";
+    return false;
+  }
+  out.saved_utc_ms = j["saved_utc_ms"].get<std::int64_t>();
+  est::WarmStart& w = out.warm;
+  if (!optional_numbers(j, "temp_ref_degC", 1, &w.temp_ref_degC, path, error) ||
+      !optional_numbers(j, "gps_bias_level_ned_m", 3, w.gps_bias_level_ned_m.data(), path, error) ||
+      !optional_numbers(j, "gnss_velocity_sigma_m_s", 1, &w.gnss_velocity_sigma_m_s, path, error) ||
+      !optional_numbers(j, "mag_sigma_uT", 1, &w.mag_sigma_uT, path, error) ||
+      !optional_numbers(j, "gnss_white_scale", 2, w.gnss_white_scale.data(), path, error) ||
+      !optional_numbers(j, "gnss_position_scale", 2, w.gnss_position_scale.data(), path, error))
+    return false;
+  w.given = true;
+  return true;
+}
+
+bool write_state_file(const std::string& path, const SavedState& s, std::string& error) {
+  const est::WarmStart& w = s.warm;
+  std::vector<ModelEffect> effects;
+  for (std::size_t e = 0; e < est::kEffectCount; ++e) {
+    const est::EffectPrior& p = w.effects[e];
+    if (!p.given) continue;
+    const auto n = static_cast<std::size_t>(est::kEffectDims[e]);
+    effects.push_back({static_cast<est::Effect>(e), {p.value.begin(), p.value.begin() + n},
+                       {p.sigma.begin(), p.sigma.begin() + n}});
+    for (double& sigma : effects.back().sigma) sigma = std::max(sigma, 1e-12);  // a held component: 0
+  }
+  nlohmann::json j = model_json(effects, 0.0, "sinu: the running unit's state, for a restart");
+  const auto vec = [](const auto& v) { return std::vector<double>(v.data(), v.data() + v.size()); };
+  j["saved_utc_ms"] = s.saved_utc_ms;
+  j["temp_ref_degC"] = w.temp_ref_degC;
+  j["gps_bias_level_ned_m"] = vec(w.gps_bias_level_ned_m);
+  j["gnss_velocity_sigma_m_s"] = w.gnss_velocity_sigma_m_s;
+  j["mag_sigma_uT"] = w.mag_sigma_uT;
+  j["gnss_white_scale"] = vec(w.gnss_white_scale);
+  j["gnss_position_scale"] = vec(w.gnss_position_scale);
+  return write_json_file(path, j, error);
+}
+
+}  // namespace sinu::board
