@@ -14,6 +14,8 @@
 
 #include "estimator/nav/nav_health.hpp"
 #include "host_tests/board/fly_flight.hpp"
+#include "host_tests/support/dataset_faults.hpp"
+#include "host_tests/support/read_json.hpp"
 #include "host_tests/support/nav_error.hpp"
 #include "host_tests/support/replay_helpers.hpp"
 #include "host_tests/support/run_process.hpp"
@@ -146,6 +148,36 @@ TEST(FlyEmulate, FaultsMidFlightAreSurvivedFlaggedAndTheSolutionReconverges) {
   // The recording holds the faults as the loop met them: it replays to the same solution.
   ASSERT_EQ(run_sinu({"replay", "--in", raw, "--out", tmp.file("from_raw"), "--quiet"}).exit_code, 0);
   EXPECT_EQ(read_file(tmp.file("fly_nav.csv")), read_file(tmp.file("from_raw") + "/nav.csv"));
+}
+
+// The board keeps its state file as `sinu replay --state-file` does (the same
+// solution, saved at the same instants: the same numbers), and a board that
+// restarts 20 s after its last save, in the air, starts from it and says so.
+TEST(FlyEmulate, KeepsTheStateFileAndARestartInTheAirStartsFromIt) {
+  TempDir tmp;
+  const FlyFlight fl = make_fly_flight(tmp, "flight", 300, 13);
+  inject_faults(fl.quantised, tmp.file("before"), {KeepLeadingSeconds{200.0}});
+  inject_faults(fl.quantised, tmp.file("after"), {DropLeadingSeconds{220.0}});
+  const std::string config = write_fly_config(tmp, "fly"), state = tmp.file("fly_state.json");
+  ProcessResult r = fly({"--config", config, "--emulate", tmp.file("before"), "--speed", "0"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string replay_state = tmp.file("replay_state.json");
+  ASSERT_EQ(run_sinu({"replay", "--in", tmp.file("before"), "--quiet", "--out", tmp.file("replay"), "--state-file",
+                      replay_state}).exit_code, 0);
+  const nlohmann::json board = read_json(state), host = read_json(replay_state);
+  EXPECT_EQ(board["saved_utc_ms"], host["saved_utc_ms"]);
+  ASSERT_EQ(board["effects"].size(), host["effects"].size());
+  for (const auto& [name, e] : host["effects"].items()) {
+    for (std::size_t i = 0; i < e["estimate"].size(); ++i) {
+      EXPECT_NEAR(board["effects"][name]["estimate"][i].get<double>(), e["estimate"][i].get<double>(),
+                  kSameOutput * (1.0 + std::abs(e["estimate"][i].get<double>()))) << name;
+    }
+  }
+  r = run_sinu({"fly", "--health-period", "0.001", "--config", config, "--emulate", tmp.file("after"), "--speed", "0"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("sinu fly: " + state + ": a warm start from the state saved 20.0 s before the first fix"),
+            std::string::npos) << r.err.substr(0, 3000);
+  EXPECT_NE(r.err.find("solution ok"), std::string::npos) << r.err.substr(r.err.size() > 2000 ? r.err.size() - 2000 : 0);
 }
 
 // An accelerometer read at the wrong full scale (configured +-16 g, decoded
