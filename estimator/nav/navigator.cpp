@@ -307,8 +307,7 @@ void Navigator::align(const ImuSample& s, double dt) {
     const Eigen::Vector3d f_b = res.at_rest ? res.rest_specific_force_b_m_s2
                                             : Eigen::Vector3d(nav_.C_nb().transpose() *
                                                               Eigen::Vector3d(0.0, 0.0, -wgs84::kStandardGravity));
-    if (!warm_tighter(Effect::GyroBias, res.gyro_bias_sigma_rad_s))
-      filter_.seed_gyro_bias(res.gyro_bias_rad_s, f_b, res.gyro_bias_sigma_rad_s);
+    filter_.seed_gyro_bias(res.gyro_bias_rad_s, f_b, res.gyro_bias_sigma_rad_s);
     if (res.at_rest) {
       // Floor: normal gravity against the site's true gravity (anomalies ~1e-3 g).
       filter_.correlate_gyro_bias_at_rest(nav_, res.rest_specific_force_b_m_s2);
@@ -374,7 +373,7 @@ WarmStart Navigator::warm_state() const {
 
 bool Navigator::warm_start(const WarmStart& saved, double age_s) {
   if (!saved.given || aligned()) return false;
-  warm_ = aged(saved, age_s, filter_.tuning(), filter_.noise());
+  warm_ = aged(saved, age_s, filter_.tuning());
   const StateLayout& L = filter_.layout();
   for (std::size_t e = 0; e < kEffectCount; ++e) {
     const auto effect = static_cast<Effect>(e);
@@ -412,14 +411,6 @@ bool Navigator::warm_start(const WarmStart& saved, double age_s) {
     pos_scale_h_.configure(cfg_.gnss_position_scale, warm_.gnss_position_scale.x());
     pos_scale_v_.configure(cfg_.gnss_position_scale, warm_.gnss_position_scale.y());
   }
-  return true;
-}
-
-bool Navigator::warm_tighter(Effect e, double sigma) const {
-  const EffectPrior& p = warm_.effects[static_cast<std::size_t>(e)];
-  if (!warm_.given || !p.given || !filter_.layout().has(e)) return false;
-  for (Eigen::Index i = 0; i < kEffectDims[static_cast<std::size_t>(e)]; ++i)
-    if (!(p.sigma[static_cast<std::size_t>(i)] < sigma)) return false;
   return true;
 }
 

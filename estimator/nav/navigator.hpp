@@ -253,9 +253,10 @@ class Navigator {
   /// What this navigator has learnt, for a restart (warm_start.hpp): given once aligned.
   WarmStart warm_state() const;
   /// A restart: `saved`, `age_s` old, becomes the priors of the effects this
-  /// navigator carries and its learnt noise levels; the alignment keeps the
-  /// saved turn-on biases where they are tighter than its own, and the
-  /// receiver's correlated error. Only before the alignment: false after.
+  /// navigator carries (not the turn-on biases: warm_start.hpp) and its
+  /// learnt noise levels; the alignment keeps the receiver's correlated
+  /// error where it is tighter than the fix's level. Only before the
+  /// alignment: false after.
   bool warm_start(const WarmStart& saved, double age_s);
   /// The restart's state in use (given = false without one).
   const WarmStart& warm() const { return warm_; }
@@ -307,8 +308,6 @@ class Navigator {
   Eigen::Vector3d white_scale(const GnssObservation& z) const;
   void update_health(double t_now, double dt);
   void emit();
-  /// A restart's saved effect e is tighter than `sigma` in every component.
-  bool warm_tighter(Effect e, double sigma) const;
 
   NavigatorConfig cfg_;
   NavObserver* observer_ = nullptr;

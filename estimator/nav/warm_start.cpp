@@ -5,11 +5,12 @@
 
 namespace sinu::est {
 
-WarmStart aged(const WarmStart& w, double age_s, const EffectTuning& tuning, const SensorNoise& noise) {
+WarmStart aged(const WarmStart& w, double age_s, const EffectTuning& tuning) {
   WarmStart out = w;
   const double age = std::max(0.0, age_s);
   for (std::size_t e = 0; e < kEffectCount; ++e) {
     EffectPrior& p = out.effects[e];
+    if (static_cast<Effect>(e) == Effect::AccelBias || static_cast<Effect>(e) == Effect::GyroBias) p.given = false;
     if (!p.given) continue;
     const auto n = static_cast<std::size_t>(kEffectDims[e]);
     if (static_cast<Effect>(e) == Effect::GpsPositionBias) {
@@ -21,10 +22,7 @@ WarmStart aged(const WarmStart& w, double age_s, const EffectTuning& tuning, con
       }
       continue;
     }
-    const Effect effect = static_cast<Effect>(e);
-    const double walk = effect == Effect::AccelBias  ? noise.accel_bias_walk
-                        : effect == Effect::GyroBias ? noise.gyro_bias_walk
-                                                     : tuning.random_walk[e];
+    const double walk = tuning.random_walk[e];
     for (std::size_t k = 0; k < n; ++k) p.sigma[k] = std::sqrt(p.sigma[k] * p.sigma[k] + walk * walk * age);
   }
   return out;
