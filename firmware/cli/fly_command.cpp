@@ -66,6 +66,8 @@ void print_end(const board::FlyLoop& loop, const board::OutputDevices& outputs, 
   if (const est::AlignmentResult& a = loop.unit().navigator().alignment_result(); std::isfinite(a.course_turn_rad))
     std::fprintf(stderr, "sinu fly: heading turned %.1f deg from the GNSS course at t=%.1f s (%s)\n",
                  a.course_turn_rad * 180.0 / std::numbers::pi, a.course_turn_t_s, est::kCourseTurnedCause);
+  if (!loop.unit().state_note().empty())  // the state file: used, not (why), not written
+    std::fprintf(stderr, "sinu fly: %s\n", loop.unit().state_note().c_str());
   std::fprintf(stderr, "sinu fly: outputs: %s\n", outputs.summary().c_str());
   if (stats) {
     const board::LoopStats& s = loop.stats();
