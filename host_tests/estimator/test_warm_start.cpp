@@ -43,7 +43,8 @@ TEST(WarmStart, AgesEachEffectByItsOwnProcess) {
   EXPECT_NEAR(pos.value[0], 1.5 * d, 1e-12);
   EXPECT_NEAR(pos.sigma[2], std::sqrt(0.36 * d * d + 6.25 * (1.0 - d * d)), 1e-12);
   // A day later it says nothing any more: the receiver's error is its level.
-  const auto& old = aged(w, 86400.0, tuning).effects[static_cast<std::size_t>(Effect::GpsPositionBias)];
+  const WarmStart day = aged(w, 86400.0, tuning);
+  const auto& old = day.effects[static_cast<std::size_t>(Effect::GpsPositionBias)];
   EXPECT_NEAR(old.value[1], 0.0, 1e-12);
   EXPECT_NEAR(old.sigma[1], 1.2, 1e-12);
   // The turn-on biases are not a restart's to keep (the IMU may have lost
