@@ -66,10 +66,8 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   mag_noise_.configure(cfg.mag_noise, cfg.mag_sigma_uT);
   pos_scale_h_.configure(cfg.gnss_position_scale, 1.0);
   pos_scale_v_.configure(cfg.gnss_position_scale, 1.0);
-  NoiseAdapterConfig white = cfg.gnss_white_scale;  // at most all white
-  white.max_sigma = std::min(white.max_sigma, 1.0 / std::sqrt(1.0 - cfg.tuning.gps_bias_variance_fraction));
-  white_h_.configure(white, 1.0);
-  white_v_.configure(white, 1.0);
+  white_h_.configure(white_scale_config(), 1.0);
+  white_v_.configure(white_scale_config(), 1.0);
   last_pos_scale_t_s_ = last_stated_t_s_ = kNever;
   course_t_s_ = heading_yaw_t_s_ = course_contradicted_since_s_ = kNever;
   course_rate_rad_s_ = yaw_rate_rad_s_ = 0.0;
@@ -345,6 +343,12 @@ void Navigator::align(const ImuSample& s, double dt) {
   alignment_result_.dip_difference_rad = alignment_.dip_difference_rad();
 }
 
+NoiseAdapterConfig Navigator::white_scale_config() const {
+  NoiseAdapterConfig white = cfg_.gnss_white_scale;  // at most all white
+  white.max_sigma = std::min(white.max_sigma, 1.0 / std::sqrt(1.0 - cfg_.tuning.gps_bias_variance_fraction));
+  return white;
+}
+
 WarmStart Navigator::warm_state() const {
   WarmStart w;
   if (!aligned()) return w;
@@ -402,10 +406,8 @@ bool Navigator::warm_start(const WarmStart& saved, double age_s) {
   }
   if (cfg_.mag_noise.enabled && warm_.mag_sigma_uT > 0.0) mag_noise_.configure(cfg_.mag_noise, warm_.mag_sigma_uT);
   if (cfg_.gnss_white_scale.enabled && warm_.gnss_white_scale.minCoeff() > 0.0) {
-    NoiseAdapterConfig white = cfg_.gnss_white_scale;
-    white.max_sigma = std::min(white.max_sigma, 1.0 / std::sqrt(1.0 - cfg_.tuning.gps_bias_variance_fraction));
-    white_h_.configure(white, warm_.gnss_white_scale.x());
-    white_v_.configure(white, warm_.gnss_white_scale.y());
+    white_h_.configure(white_scale_config(), warm_.gnss_white_scale.x());
+    white_v_.configure(white_scale_config(), warm_.gnss_white_scale.y());
   }
   if (cfg_.gnss_position_scale.enabled && warm_.gnss_position_scale.minCoeff() > 0.0) {
     pos_scale_h_.configure(cfg_.gnss_position_scale, warm_.gnss_position_scale.x());

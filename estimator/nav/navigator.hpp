@@ -306,6 +306,8 @@ class Navigator {
   double turn_rate_rad_s(double t_s) const;
   void learn_position_noise(const GnssObservation& z, double t_meas);
   Eigen::Vector3d white_scale(const GnssObservation& z) const;
+  /// The white-share learner's settings: the configured ones, capped at "all white".
+  NoiseAdapterConfig white_scale_config() const;
   void update_health(double t_now, double dt);
   void emit();
 
