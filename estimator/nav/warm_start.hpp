@@ -5,7 +5,8 @@
 // receiver's latency and correlated error, the hard iron, ...), the
 // temperature they refer to and the noise levels learnt from the
 // innovations. The attitude, velocity and position are not in it: a
-// restarted unit aligns again, in motion, and takes these as its priors.
+// restarted unit aligns again, in motion, and takes these as its priors,
+// aged, less what a power cycle changes (aged() below).
 // The board keeps it in a state file (firmware/board/state_file.hpp).
 #include <array>
 #include <Eigen/Core>
@@ -28,12 +29,14 @@ struct WarmStart {
 /// The same, `age_s` later, as a restart's priors: each effect's sigma grown
 /// by its random walk over the age; the receiver's correlated error decayed
 /// towards zero and its variance towards the GM's level (tau from the
-/// tuning). The turn-on biases (accel_bias, gyro_bias) are left out: a
-/// restart cannot tell whether the IMU lost power with the computer, and a
-/// power cycle draws them anew (a restart that kept a 0.3-deg/s gyro bias
-/// which had moved by 0.3 deg/s flew its first minutes with 0.44 deg of
-/// attitude error, cold 0.25; one of 1.1 deg/s was reset). They come back
-/// within a minute of flight; the state file still records them.
+/// tuning). Left out, though the state file records them, is what a power
+/// cycle or a battery swap changes, which a restart cannot tell from a
+/// reboot: the turn-on biases (accel_bias, gyro_bias: a restart that kept a
+/// gyro bias which had moved by 0.3 deg/s flew with 0.44 deg of attitude
+/// error, cold 0.25; one of 1.1 deg/s was reset) and the magnetometer's
+/// iron (mag_hard_iron, mag_soft_iron, mag_motor_interference: a hard iron
+/// 15 uT off, kept, turned the attitude 13 deg and was reset; cold 0.4 deg).
+/// Both come back from the data within a minute of flight.
 WarmStart aged(const WarmStart& w, double age_s, const EffectTuning& tuning);
 
 }  // namespace sinu::est
