@@ -24,12 +24,23 @@ bool numbers(const nlohmann::json& v, std::size_t n, bool positive, std::array<d
 bool read_model_file(const std::string& path, est::EffectSet& effects,
                      std::array<est::EffectPrior, est::kEffectCount>& priors, double& imu_latency_s,
                      std::string& error) {
+  nlohmann::json j;
+  return parse_json_file(path, j, error) && read_model_json(j, path, effects, priors, imu_latency_s, error);
+}
+
+bool parse_json_file(const std::string& path, nlohmann::json& j, std::string& error) {
   std::ifstream in(path);
   if (!in) {
     error = path + ": cannot open the model file";
     return false;
   }
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  return true;
+}
+
+bool read_model_json(const nlohmann::json& j, const std::string& path, est::EffectSet& effects,
+                     std::array<est::EffectPrior, est::kEffectCount>& priors, double& imu_latency_s,
+                     std::string& error) {
   if (j.is_discarded() || !j.is_object() || !j.contains("effects") || !j["effects"].is_object()) {
     error = path + ": not a model file (a JSON object with an \"effects\" object)";
     return false;

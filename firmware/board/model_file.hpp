@@ -30,6 +30,14 @@ bool read_model_file(const std::string& path, est::EffectSet& effects,
                      std::array<est::EffectPrior, est::kEffectCount>& priors, double& imu_latency_s,
                      std::string& error);
 
+/// `path` parsed (a discarded value when it is not JSON); false with `error`
+/// when it cannot be opened.
+bool parse_json_file(const std::string& path, nlohmann::json& j, std::string& error);
+/// read_model_file's reading of an already parsed file (`path` for the errors).
+bool read_model_json(const nlohmann::json& j, const std::string& path, est::EffectSet& effects,
+                     std::array<est::EffectPrior, est::kEffectCount>& priors, double& imu_latency_s,
+                     std::string& error);
+
 /// The IMU latency a flight runs with: the configured one, else the model file's.
 inline double imu_latency_in_use(double configured_s, double model_file_s) {
   return configured_s > 0.0 ? configured_s : model_file_s;

@@ -1,7 +1,6 @@
 #include "firmware/board/state_file.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "firmware/board/model_file.hpp"
@@ -37,9 +36,9 @@ bool read_state_file(const std::string& path, SavedState& out, std::string& erro
   out = {};
   est::EffectSet effects;
   double imu_latency_s = 0.0;
-  if (!read_model_file(path, effects, out.warm.effects, imu_latency_s, error)) return false;
-  std::ifstream in(path);
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  nlohmann::json j;
+  if (!parse_json_file(path, j, error) || !read_model_json(j, path, effects, out.warm.effects, imu_latency_s, error))
+    return false;
   if (!j.contains("saved_utc_ms") || !j["saved_utc_ms"].is_number_integer()) {
     error = path + ": saved_utc_ms: expected an integer (ms since 1970-01-01 UTC); not a state file?";
     return false;
