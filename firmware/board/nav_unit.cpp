@@ -126,8 +126,7 @@ void NavUnit::save_state(bool final) {
   const double t = nav_->nav().t_s;
   if (!final && t - last_state_save_t_s_ < cfg_.state_period_s) return;
   last_state_save_t_s_ = t;
-  const double latency = nav_->filter().gps_latency_s();
-  SavedState s{nav_->warm_state(), fix_utc_ms_ + std::llround((t - (fix_arrival_s_ - latency)) * 1000.0)};
+  SavedState s{nav_->warm_state(), utc_ms_at(t)};
   std::string error;
   if (!write_state_file(cfg_.state_path, s, error)) {
     state_write_failed_ = true;  // said once; the unit flies on
@@ -143,6 +142,11 @@ bool NavUnit::observation(const drivers::GpsFix& fix, est::GnssObservation& z) c
 bool NavUnit::push_fix(const drivers::GpsFix& fix) {
   est::GnssObservation z;
   if (!observation(fix, z)) return false;
+  push_fix(fix, z);
+  return true;
+}
+
+void NavUnit::push_fix(const drivers::GpsFix& fix, const est::GnssObservation& z) {
   const bool dated = fix.date.has_value();
   const std::int64_t utc_ms = dated ? utc_epoch_ms(*fix.date, fix.utc_ms) : 0;
   if (warm_pending_ && dated) decide_warm_start(utc_ms);  // before the fix can align the unit
@@ -157,7 +161,6 @@ bool NavUnit::push_fix(const drivers::GpsFix& fix) {
     satellites_ = fix.sats.value_or(0);
     hdop_ = fix.hdop.value_or(99.99);
   }
-  return true;
 }
 
 std::int64_t utc_epoch_ms(const drivers::UtcDate& d, drivers::UtcMs time_of_day_ms) {
@@ -190,10 +193,14 @@ void NavUnit::solution(const est::NavOutput& o, NavSolution& sol) const {
   sol.hdop = hdop_;
   sol.has_utc = have_fix_ && fix_has_utc_;
   if (sol.has_utc) {
-    // The fix was valid at its arrival less the latency (estimated, or as configured).
-    const double latency = nav_->filter().gps_latency_s();
-    sol.utc_ms = fix_utc_ms_ + std::llround((o.nav.t_s - (fix_arrival_s_ - latency)) * 1000.0);
+    sol.utc_ms = utc_ms_at(o.nav.t_s);
   }
+}
+
+std::int64_t NavUnit::utc_ms_at(double t_s) const {
+  // The fix was valid at its arrival less the latency (estimated, or as configured).
+  const double latency = nav_->filter().gps_latency_s();
+  return fix_utc_ms_ + std::llround((t_s - (fix_arrival_s_ - latency)) * 1000.0);
 }
 
 }  // namespace sinu::board

@@ -45,6 +45,8 @@ class NavUnit {
   /// observation() into the navigator, and the fix's time and receiver
   /// fields kept; false when the fix had no usable position.
   bool push_fix(const drivers::GpsFix& fix);
+  /// The same with its observation `z` (observation(fix), true) already made.
+  void push_fix(const drivers::GpsFix& fix, const est::GnssObservation& z);
   /// End of data: processes what the navigator still holds (and saves the state file).
   void flush() {
     nav_->flush();
@@ -93,6 +95,8 @@ class NavUnit {
   void decide_warm_start(std::int64_t fix_utc_ms);
   /// Writes the state file when due (or now, `final`), once aligned and dated.
   void save_state(bool final);
+  /// UTC [ms since 1970] at navigator time t_s, from the last dated fix (which must exist).
+  std::int64_t utc_ms_at(double t_s) const;
 };
 
 /// Milliseconds since 1970-01-01 UTC of a date and a time of day.

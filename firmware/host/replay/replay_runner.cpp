@@ -159,7 +159,7 @@ class UnitFeed final : public ReplayFeed {
     }
     last_used_t_ = t_valid;
     ++gnss.used;
-    unit_.push_fix(f);  // the fix's time too (the state file's age, the solution's UTC)
+    unit_.push_fix(f, z);  // the fix's time too (the state file's age, the solution's UTC)
     if (z.has_height) metrics_.add_gnss({t_valid, z.lat_rad, z.lon_rad, z.h_m});  // "GNSS alone": the 3-D fixes
   }
 
