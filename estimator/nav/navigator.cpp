@@ -24,6 +24,15 @@ constexpr double kNever = -1e300;
 constexpr Effect kMagEffects[] = {Effect::MagEarthField, Effect::MagHardIron, Effect::MagSoftIron,
                                   Effect::MagMisalign};
 
+/// A restart's prior, component k: kept where tighter than what the unit
+/// would start from without it (cold_value, cold_sigma), else that: a saved
+/// sigma that has grown past it is no knowledge.
+void keep_tighter(EffectPrior& saved, std::size_t k, double cold_value, double cold_sigma) {
+  if (saved.sigma[k] < cold_sigma) return;
+  saved.value[k] = cold_value;
+  saved.sigma[k] = cold_sigma;
+}
+
 StateLayout layout_of(const NavigatorConfig& cfg) {
   EffectSet effects = cfg.effects, deferred;
   if (cfg.use_mag) {
@@ -322,11 +331,7 @@ void Navigator::align(const ImuSample& s, double dt) {
     if (warm_.given && warm_.effects[static_cast<std::size_t>(Effect::GpsPositionBias)].given) {
       EffectPrior p = warm_.effects[static_cast<std::size_t>(Effect::GpsPositionBias)];
       const Eigen::Vector3d level = filter_.gps_bias_sigma_ned_m();
-      for (std::size_t i = 0; i < 3; ++i) {
-        if (p.sigma[i] < level(static_cast<Eigen::Index>(i))) continue;
-        p.value[i] = 0.0;
-        p.sigma[i] = level(static_cast<Eigen::Index>(i));
-      }
+      for (std::size_t i = 0; i < 3; ++i) keep_tighter(p, i, 0.0, level(static_cast<Eigen::Index>(i)));
       filter_.set_prior(Effect::GpsPositionBias, p);
     }
     seed_position_on_fix(z, s.t_s - (z.arrival_s - latency));
@@ -387,15 +392,12 @@ bool Navigator::warm_start(const WarmStart& saved, double age_s) {
       w.given = false;
       continue;
     }
-    // Per component, the saved value where it is tighter than the prior this
-    // unit would start from (a model file's, else the vocabulary's); a saved
-    // sigma that has grown past it is no knowledge.
+    // Per component, against the prior this unit would start from (a model
+    // file's, else the vocabulary's).
     const EffectPrior& cold = filter_.tuning().prior[e];
     for (std::size_t k = 0; k < static_cast<std::size_t>(kEffectDims[e]); ++k) {
-      const double cold_sigma = cold.given ? cold.sigma[k] : filter_.tuning().initial_sigma[e];
-      if (w.sigma[k] < cold_sigma) continue;
-      w.value[k] = cold.given ? cold.value[k] : filter_.effect(effect, static_cast<Eigen::Index>(k));
-      w.sigma[k] = cold_sigma;
+      keep_tighter(w, k, cold.given ? cold.value[k] : filter_.effect(effect, static_cast<Eigen::Index>(k)),
+                   cold.given ? cold.sigma[k] : filter_.tuning().initial_sigma[e]);
     }
     filter_.set_prior(effect, w);
   }
