@@ -95,8 +95,8 @@ class FlyLoop final : private BoardSink, private est::NavObserver {
   std::uint32_t flags_ = 0;  // events since the last health line
   hal::TimeNs last_sample_ns_ = 0, last_fix_ns_ = 0, last_report_wall_ns_ = 0, last_sync_ns_ = 0;
   bool have_sample_ = false, have_fix_ = false;
-  FlyHealth at_last_report_;
-  int state_note_printed_ = 0;  // NavUnit::state_note_version() last printed  // counters at the previous health line
+  FlyHealth at_last_report_;    // counters at the previous health line
+  int state_note_printed_ = 0;  // NavUnit::state_note_version() last printed
   std::uint64_t fixes_ = 0;
 };
 

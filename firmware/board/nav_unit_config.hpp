@@ -56,9 +56,10 @@ struct NavUnitConfig {
   double gyro_range_rad_s = 0.0;
   double mag_declination_deg = NAN;  // set: align with the magnetometer at rest
   // The state file (state_file.hpp): read at start, used by a restart whose
-  // first fix is at most state_max_age_s after it was saved (a reboot in the
-  // air; an older one is from another power-on and its turn-on biases no
-  // longer hold), written every state_period_s once aligned. "": none.
+  // first dated fix is at most state_max_age_s after it was saved (a reboot
+  // in the air; an older one is from another flight, what it knew of the
+  // receiver's error long gone), written every state_period_s once aligned.
+  // "": none.
   std::string state_path;
   double state_max_age_s = 600.0;
   double state_period_s = 5.0;

@@ -15,8 +15,8 @@
 //
 // A unit that kept its state file (what it had learnt, saved every 5 s:
 // firmware/board/state_file.hpp) restarts with the receiver's correlated
-// error, the biases and the latency it knew: over the whole rest it must be
-// within the same 20 % of the full replay.
+// error and the latency it knew: over the whole rest it must be within the
+// same 20 % of the full replay.
 #include <gtest/gtest.h>
 
 #include <cmath>
