@@ -68,6 +68,16 @@ void add_diagnose_command(CLI::App& app, Action& action) {
   sub->add_option("--rounds", c->opt.rounds, "How many effects to look for, one after the other")
       ->capture_default_str()
       ->check(CLI::Range(1, 5));
+  sub->add_option("--min-evidence", c->opt.min_log_evidence,
+                  "Name an effect only when it raises the innovations' log-likelihood by more than this, a log Bayes "
+                  "factor (ln 100, 'decisive'; lower names weaker effects and more on clean flights: docs/diagnose.md)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1e6));
+  sub->add_option("--min-significance", c->opt.min_significance,
+                  "Name an effect only when its estimate is at least this many sigma from the assumed value (in one "
+                  "component)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 100.0));
   sub->add_option("--out", c->opt.out_dir,
                   "Output folder: report.md, report.html, diagnosis.json and the baseline replay (baseline/)")
       ->required();

@@ -118,6 +118,15 @@ TEST(Cli, DiagnoseWithoutItsRequiredOptionsIsAUsageError) {
   EXPECT_TRUE(r.out.empty()) << "never made-up output";
 }
 
+// The decision thresholds are the user's to move, within what they mean: a
+// negative log Bayes factor would name effects that make the fit worse.
+TEST(Cli, DiagnoseRefusesAThresholdOutsideItsMeaning) {
+  const auto r = run_sinu({"diagnose", "--in", ".", "--out", "x", "--min-evidence", "-1"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--min-evidence"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << "never made-up output";
+}
+
 TEST(Cli, InspectRealDrive) {
   SINU_REQUIRE_SHARED(dir, "data/real/drive_0708");
   const auto r = run_sinu({"inspect", "dataset", dir});
