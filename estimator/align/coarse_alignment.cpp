@@ -112,9 +112,9 @@ bool CoarseAlignment::add_gnss(const GnssObservation& fix, double t_now, Alignme
   // Magnetic heading: the field in the levelled (yaw 0) frame is Rz(-yaw) F_n,
   // whose horizontal angle is declination - yaw.
   if (cfg_.use_mag && r.has_mag) {
-    const Eigen::Vector3d m_level = r.q_level * r.mean_mag_b_uT;
     const FieldDeclination d = declination_at(z);
-    if (field_recognised(m_level, d)) {
+    Eigen::Vector3d m_level;
+    if (rest_field(r, d, m_level, out)) {
       use_declination(d, out);
       const double sigma = std::max(d.sigma_rad, field_heading_sigma(m_level, rest_tilt_sigma()));
       finish(z, t_now, d.rad - std::atan2(m_level.y(), m_level.x()), sigma, out);
@@ -164,6 +164,21 @@ bool CoarseAlignment::field_recognised(const Eigen::Vector3d& m_level, const Fie
   dip_difference_rad_ = dip - d.model_inclination_rad;
   return std::abs(field_ratio_ - 1.0) <= cfg_.geomag_max_field_ratio &&
          std::abs(dip_difference_rad_) <= cfg_.geomag_max_dip_rad;
+}
+
+bool CoarseAlignment::rest_field(const RestEstimate& r, const FieldDeclination& d, Eigen::Vector3d& m_level,
+                                 AlignmentResult& out) {
+  m_level = r.q_level * r.mean_mag_b_uT;
+  if (field_recognised(m_level, d)) return true;
+  if (!have_saved_iron_) return false;
+  const Eigen::Vector3d saved = r.q_level * (saved_iron_A_ * r.mean_mag_b_uT + saved_iron_b_);
+  if (!field_recognised(saved, d)) {
+    field_recognised(m_level, d);  // the refusal names the field as it is
+    return false;
+  }
+  m_level = saved;
+  out.field_corrected_by_saved_iron = true;
+  return true;
 }
 
 void CoarseAlignment::use_declination(const FieldDeclination& d, AlignmentResult& out) const {

@@ -127,6 +127,9 @@ struct AlignmentResult {
   double course_turn_rad = NAN, course_turn_t_s = NAN;
   double declination_rad = NAN;   // the declination used (magnetometer headings with one)
   double declination_drift_rad = 0.0;  // without a date: its change to either end of the model's span
+  // The field at rest was the Earth's only as corrected by a restart's saved
+  // iron (set_saved_iron_field): the navigator then carries that iron.
+  bool field_corrected_by_saved_iron = false;
   // The measured field against the model's, when the model was consulted:
   // its strength ratio and dip difference (why it was or was not used).
   double field_ratio = NAN, dip_difference_rad = NAN;
@@ -155,6 +158,15 @@ class CoarseAlignment {
   double field_ratio() const { return field_ratio_; }
   double dip_difference_rad() const { return dip_difference_rad_; }
   void end_course_check() { course_check_until_s_ = -1.0; }
+  /// A restart's saved magnetometer iron as a second reading of the field at
+  /// rest, tried where the field as corrected now is not the Earth's: the
+  /// rest's mean field becomes A m + b (the saved iron's correction of what
+  /// the current one gave). Only at rest: in motion the GNSS gives the heading.
+  void set_saved_iron_field(const Eigen::Matrix3d& A, const Eigen::Vector3d& b) {
+    saved_iron_A_ = A;
+    saved_iron_b_ = b;
+    have_saved_iron_ = true;
+  }
 
  private:
   void finish(const GnssObservation& z, double t_now_s, double turn_rad, double yaw_sigma_rad, AlignmentResult& out);
@@ -214,6 +226,11 @@ class CoarseAlignment {
   Eigen::Quaterniond q_still_ = Eigen::Quaterniond::Identity();
   double carried_still_s_ = 0.0;
   double field_ratio_ = NAN, dip_difference_rad_ = NAN;         // the last field check against the model
+  bool have_saved_iron_ = false;  // set_saved_iron_field
+  Eigen::Matrix3d saved_iron_A_ = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d saved_iron_b_ = Eigen::Vector3d::Zero();
+  /// The rest's field in the levelled frame, as the Earth's if it is (out's flag set when only the saved iron makes it so).
+  bool rest_field(const RestEstimate& r, const FieldDeclination& d, Eigen::Vector3d& m_level, AlignmentResult& out);
 };
 
 }  // namespace sinu::est

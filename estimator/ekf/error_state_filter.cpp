@@ -120,11 +120,20 @@ void ErrorStateFilter::reanchor_hard_iron(const NavState& nav, const Eigen::Vect
 }
 
 Eigen::Vector3d ErrorStateFilter::mag_field_b_uT(const Eigen::Vector3d& mag_b_uT) const {
+  static const std::array<EffectPrior, kEffectCount> kNothingElse{};
+  return mag_field_b_uT(mag_b_uT, kNothingElse);
+}
+
+Eigen::Vector3d ErrorStateFilter::mag_field_b_uT(const Eigen::Vector3d& mag_b_uT,
+                                                 const std::array<EffectPrior, kEffectCount>& instead) const {
   std::array<double, kMaxEffectStates> known = value_;  // a deferred state at its given prior
   const auto at = [&](Effect e) { return known.data() + kEffectValueOffset[static_cast<std::size_t>(e)]; };
   for (const Effect e : {Effect::MagHardIron, Effect::MagSoftIron, Effect::MagMisalign}) {
-    const EffectPrior& p = tuning_.prior[static_cast<std::size_t>(e)];
-    if (p.given && !layout_.has(e)) std::copy_n(p.value.begin(), kEffectDims[static_cast<std::size_t>(e)], at(e));
+    const EffectPrior& given = tuning_.prior[static_cast<std::size_t>(e)];
+    const EffectPrior& other = instead[static_cast<std::size_t>(e)];
+    const EffectPrior& p = other.given ? other : given;
+    if (other.given || (p.given && !layout_.has(e)))
+      std::copy_n(p.value.begin(), kEffectDims[static_cast<std::size_t>(e)], at(e));
   }
   const Eigen::Matrix3d A = mag_axes_of(EffectView{at(Effect::MagSoftIron)}, EffectView{at(Effect::MagMisalign)});
   return A.inverse() * (mag_b_uT - EffectView{at(Effect::MagHardIron)}.vec3());

@@ -112,6 +112,9 @@ class ErrorStateFilter {
   /// the priors a model file gave them (a hard iron found on an earlier
   /// flight); the reading itself when nothing is known.
   Eigen::Vector3d mag_field_b_uT(const Eigen::Vector3d& mag_b_uT) const;
+  /// The same with the magnetometer effects `instead` gives (a restart's saved iron) at its values.
+  Eigen::Vector3d mag_field_b_uT(const Eigen::Vector3d& mag_b_uT,
+                                 const std::array<EffectPrior, kEffectCount>& instead) const;
   const EffectTuning& tuning() const { return tuning_; }
   const SensorNoise& noise() const { return noise_; }
 

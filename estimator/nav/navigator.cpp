@@ -309,6 +309,7 @@ void Navigator::align(const ImuSample& s, double dt) {
     filter_.reset_block(filter_.layout().vel, res.vel_sigma_m_s);
     // A restart's biases refer to the temperature they were learnt at.
     filter_.set_reference_temperature(warm_.given ? warm_.temp_ref_degC : res.temp_ref_degC);
+    if (res.field_corrected_by_saved_iron) keep_saved_iron();  // the heading came from it
     // The rate was measured at the rest's specific force, or in motion on the
     // window's average, about gravity's.
     const Eigen::Vector3d f_b = res.at_rest ? res.rest_specific_force_b_m_s2
@@ -346,6 +347,44 @@ void Navigator::align(const ImuSample& s, double dt) {
   // Not aligned yet: why the field gave no heading, should it stay so.
   alignment_result_.field_ratio = alignment_.field_ratio();
   alignment_result_.dip_difference_rad = alignment_.dip_difference_rad();
+}
+
+void Navigator::offer_saved_iron() {
+  std::array<EffectPrior, kEffectCount> iron{};
+  bool any = false;
+  for (std::size_t e = 0; e < kEffectCount; ++e) {
+    if (!checked_by_the_field(static_cast<Effect>(e)) || !warm_.effects[e].given) continue;
+    iron[e] = warm_.effects[e];
+    any = true;
+  }
+  if (!any) return;
+  // Both corrections are affine in the reading (A^-1 (m - h)): the saved
+  // iron's reading of the field is an affine map of the current one's, which
+  // the rest's mean field is.
+  const auto affine = [&](const std::array<EffectPrior, kEffectCount>& with, Eigen::Matrix3d& M, Eigen::Vector3d& c) {
+    c = filter_.mag_field_b_uT(Eigen::Vector3d::Zero(), with);
+    for (Eigen::Index i = 0; i < 3; ++i) M.col(i) = filter_.mag_field_b_uT(Eigen::Vector3d::Unit(i), with) - c;
+  };
+  Eigen::Matrix3d now_M, saved_M;
+  Eigen::Vector3d now_c, saved_c;
+  affine({}, now_M, now_c);
+  affine(iron, saved_M, saved_c);
+  const Eigen::Matrix3d A = saved_M * now_M.inverse();
+  alignment_.set_saved_iron_field(A, saved_c - A * now_c);
+}
+
+void Navigator::keep_saved_iron() {
+  for (std::size_t e = 0; e < kEffectCount; ++e) {
+    const auto effect = static_cast<Effect>(e);
+    if (!checked_by_the_field(effect) || !warm_.effects[e].given) continue;
+    EffectPrior p = warm_.effects[e];
+    // One attitude's strength and dip cannot see every shift of the iron
+    // (one across the horizontal field turns the heading and keeps both):
+    // the hard iron is held to no better than the field the alignment trusts.
+    if (effect == Effect::MagHardIron)
+      for (std::size_t k = 0; k < 3; ++k) p.sigma[k] = std::max(p.sigma[k], cfg_.alignment.mag_residual_field_uT);
+    filter_.set_prior(effect, p);
+  }
 }
 
 NoiseAdapterConfig Navigator::white_scale_config() const {
@@ -392,6 +431,7 @@ bool Navigator::warm_start(const WarmStart& saved, double age_s) {
       w.given = false;
       continue;
     }
+    if (checked_by_the_field(effect)) continue;  // at the alignment, by the field (offer_saved_iron)
     // Per component, against the prior this unit would start from (a model
     // file's, else the vocabulary's).
     const EffectPrior& cold = filter_.tuning().prior[e];
@@ -401,6 +441,7 @@ bool Navigator::warm_start(const WarmStart& saved, double age_s) {
     }
     filter_.set_prior(effect, w);
   }
+  offer_saved_iron();
   // Learnt noise levels, where this unit learns them (a sigma the user gave stays).
   if (cfg_.gnss_velocity_noise.enabled && warm_.gnss_velocity_sigma_m_s > 0.0) {
     vel_noise_.configure(cfg_.gnss_velocity_noise, warm_.gnss_velocity_sigma_m_s);

@@ -255,7 +255,8 @@ class Navigator {
   /// A restart: `saved`, `age_s` old, becomes the priors of the effects this
   /// navigator carries (not the turn-on biases: warm_start.hpp) and its
   /// learnt noise levels; the alignment keeps the receiver's correlated
-  /// error where it is tighter than the fix's level. Only before the
+  /// error where it is tighter than the fix's level, and the magnetometer's
+  /// iron where the field at rest says it has not moved. Only before the
   /// alignment: false after.
   bool warm_start(const WarmStart& saved, double age_s);
   /// The restart's state in use (given = false without one).
@@ -308,6 +309,10 @@ class Navigator {
   Eigen::Vector3d white_scale(const GnssObservation& z) const;
   /// The white-share learner's settings: the configured ones, capped at "all white".
   NoiseAdapterConfig white_scale_config() const;
+  /// A restart's saved magnetometer iron, offered to the alignment at rest
+  /// (warm_start.hpp checked_by_the_field), and carried when it aligned on it.
+  void offer_saved_iron();
+  void keep_saved_iron();
   void update_health(double t_now, double dt);
   void emit();
 

@@ -29,14 +29,19 @@ struct WarmStart {
 /// The same, `age_s` later, as a restart's priors: each effect's sigma grown
 /// by its random walk over the age; the receiver's correlated error decayed
 /// towards zero and its variance towards the GM's level (tau from the
-/// tuning). Left out, though the state file records them, is what a power
-/// cycle or a battery swap changes, which a restart cannot tell from a
-/// reboot: the turn-on biases (accel_bias, gyro_bias: a restart that kept a
-/// gyro bias which had moved by 0.3 deg/s flew with 0.44 deg of attitude
-/// error, cold 0.25; one of 1.1 deg/s was reset) and the magnetometer's
-/// iron (mag_hard_iron, mag_soft_iron, mag_motor_interference: a hard iron
-/// 15 uT off, kept, turned the attitude 13 deg and was reset; cold 0.4 deg).
-/// Both come back from the data within a minute of flight.
+/// tuning). Left out, though the state file records them, are the turn-on
+/// biases (accel_bias, gyro_bias), which a power cycle changes and a restart
+/// cannot tell from a reboot: a restart that kept a gyro bias which had
+/// moved by 0.3 deg/s flew with 0.44 deg of attitude error, cold 0.25; one
+/// of 1.1 deg/s was reset. They come back from the data within a minute.
 WarmStart aged(const WarmStart& w, double age_s, const EffectTuning& tuning);
+
+/// The magnetometer's iron (mag_hard_iron, mag_soft_iron,
+/// mag_motor_interference), which a battery or payload swap moves: a restart
+/// keeps it only where the field it corrects is the Earth's and the field
+/// without it is not (the navigator's alignment at rest, where nothing else
+/// gives a heading). Kept regardless, a hard iron 15 uT off turned the
+/// attitude 13 deg and was reset (cold 0.4 deg).
+bool checked_by_the_field(Effect e);
 
 }  // namespace sinu::est

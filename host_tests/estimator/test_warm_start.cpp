@@ -24,6 +24,7 @@ TEST(WarmStart, AgesEachEffectByItsOwnProcess) {
   set(Effect::GpsLatency, 0.08, 0.003);
   set(Effect::GyroScale, 0.01, 0.002);
   set(Effect::GpsPositionBias, 1.5, 0.6);
+  set(Effect::MagHardIron, 12.0, 0.2);
   w.gps_bias_level_ned_m = {1.2, 1.2, 2.5};
   const double age = 60.0;
   const WarmStart a = aged(w, age, tuning);
@@ -52,6 +53,15 @@ TEST(WarmStart, AgesEachEffectByItsOwnProcess) {
   EXPECT_FALSE(a.effects[static_cast<std::size_t>(Effect::AccelBias)].given);
   EXPECT_FALSE(a.effects[static_cast<std::size_t>(Effect::GyroBias)].given);
   EXPECT_FALSE(a.effects[static_cast<std::size_t>(Effect::LeverArm)].given);
+  // The iron is aged like any walk and offered to the alignment, which keeps
+  // it only where the field says it has not moved (checked_by_the_field).
+  const auto& iron = a.effects[static_cast<std::size_t>(Effect::MagHardIron)];
+  ASSERT_TRUE(iron.given);
+  EXPECT_TRUE(checked_by_the_field(Effect::MagHardIron));
+  EXPECT_FALSE(checked_by_the_field(Effect::GpsLatency));
+  EXPECT_DOUBLE_EQ(iron.value[1], 12.0);
+  const double iron_walk = tuning.walk(Effect::MagHardIron);
+  EXPECT_NEAR(iron.sigma[1], std::sqrt(0.04 + iron_walk * iron_walk * age), 1e-12);
 }
 
 }  // namespace
