@@ -172,7 +172,8 @@ bool CoarseAlignment::rest_field(const RestEstimate& r, const FieldDeclination& 
   if (field_recognised(m_level, d)) return true;
   if (!have_saved_iron_) return false;
   const Eigen::Vector3d saved = r.q_level * (saved_iron_A_ * r.mean_mag_b_uT + saved_iron_b_);
-  if (!field_recognised(saved, d)) {
+  saved_iron_refused_ = !field_recognised(saved, d);
+  if (saved_iron_refused_) {
     field_recognised(m_level, d);  // the refusal names the field as it is
     return false;
   }

@@ -130,6 +130,8 @@ struct AlignmentResult {
   // The field at rest was the Earth's only as corrected by a restart's saved
   // iron (set_saved_iron_field): the navigator then carries that iron.
   bool field_corrected_by_saved_iron = false;
+  // Not aligned: a restart's saved iron was tried and did not make the field the Earth's either.
+  bool saved_iron_refused = false;
   // The measured field against the model's, when the model was consulted:
   // its strength ratio and dip difference (why it was or was not used).
   double field_ratio = NAN, dip_difference_rad = NAN;
@@ -157,6 +159,8 @@ class CoarseAlignment {
   /// ratio and the dip difference [rad], also when they refused the field.
   double field_ratio() const { return field_ratio_; }
   double dip_difference_rad() const { return dip_difference_rad_; }
+  /// The last field check also tried the restart's saved iron, which did not explain the field either.
+  bool saved_iron_refused() const { return saved_iron_refused_; }
   void end_course_check() { course_check_until_s_ = -1.0; }
   /// A restart's saved magnetometer iron as a second reading of the field at
   /// rest, tried where the field as corrected now is not the Earth's: the
@@ -227,6 +231,7 @@ class CoarseAlignment {
   double carried_still_s_ = 0.0;
   double field_ratio_ = NAN, dip_difference_rad_ = NAN;         // the last field check against the model
   bool have_saved_iron_ = false;  // set_saved_iron_field
+  bool saved_iron_refused_ = false;
   Eigen::Matrix3d saved_iron_A_ = Eigen::Matrix3d::Identity();
   Eigen::Vector3d saved_iron_b_ = Eigen::Vector3d::Zero();
   /// The rest's field in the levelled frame, as the Earth's if it is (out's flag set when only the saved iron makes it so).

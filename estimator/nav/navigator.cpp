@@ -347,6 +347,7 @@ void Navigator::align(const ImuSample& s, double dt) {
   // Not aligned yet: why the field gave no heading, should it stay so.
   alignment_result_.field_ratio = alignment_.field_ratio();
   alignment_result_.dip_difference_rad = alignment_.dip_difference_rad();
+  alignment_result_.saved_iron_refused = alignment_.saved_iron_refused();
 }
 
 void Navigator::offer_saved_iron() {

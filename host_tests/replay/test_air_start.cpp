@@ -152,6 +152,7 @@ TEST(NoHeading, AFieldTheModelDoesNotKnowAndNoMotionIsToldWithTheWayOut) {
   EXPECT_NE(r.err.find("magnetometer's field is not the Earth's"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--mag-declination"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("no rest period"), std::string::npos) << r.err;
+  EXPECT_FALSE(refused["not_aligned"]["saved_iron_refused"].get<bool>()) << "no state file, no saved iron";
   // The way out it names: the site's declination (the simulator's site: 4.0 deg east).
   const auto s = replay_summary({"replay", "--in", still, "--mag-declination", "4.0", "--quiet", "--out", dir.file("d")});
   EXPECT_TRUE(s["aligned"].get<bool>());
@@ -216,6 +217,8 @@ TEST(NoHeading, ARestartStandingStillAlignsOnTheIronItSavedWhereTheFieldSaysItHa
   const auto [moved_err, refused] = restart(moved, "moved_out");
   EXPECT_FALSE(refused["aligned"].get<bool>());
   EXPECT_NE(moved_err.find("magnetometer's field is not the Earth's"), std::string::npos) << moved_err;
+  EXPECT_NE(moved_err.find("the state file's iron does not explain it either"), std::string::npos) << moved_err;
+  EXPECT_TRUE(refused["not_aligned"]["saved_iron_refused"].get<bool>());
 }
 
 }  // namespace

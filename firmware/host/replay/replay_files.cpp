@@ -116,7 +116,8 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
     // Why there is no solution, and the field check that refused the magnetometer's heading (null: none).
     sj["not_aligned"] = {{"reason", r.not_aligned_reason()},
                          {"field_over_model", num(r.alignment.field_ratio)},
-                         {"dip_minus_model_deg", num(r.alignment.dip_difference_rad * kDeg)}};
+                         {"dip_minus_model_deg", num(r.alignment.dip_difference_rad * kDeg)},
+                         {"saved_iron_refused", r.alignment.saved_iron_refused}};
   }
   // The units check (estimator/nav/sensor_scale_check.hpp): null where nothing was judged.
   sj["sensor_units"] = {{"specific_force_over_gravity", num(r.scale.specific_force_over_gravity)},

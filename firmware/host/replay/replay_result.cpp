@@ -75,10 +75,13 @@ std::string ReplayResult::not_aligned_reason() const {
   if (gnss.used > 0 && std::isfinite(alignment.field_ratio)) {
     return fmt::format("no heading to start from: the GNSS never showed the unit moving, and the magnetometer's field "
                        "is not the Earth's as the World Magnetic Model has it here ({:.2f}x its strength, dip {:+.1f} "
-                       "deg off: an uncalibrated hard or soft iron), so it gives none. --mag-declination DEG takes "
+                       "deg off: an uncalibrated hard or soft iron{}), so it gives none. --mag-declination DEG takes "
                        "the heading from the field as it is; a model file with the unit's hard iron (sinu diagnose "
                        "--apply on an earlier flight, --model-file) corrects it",
-                       alignment.field_ratio, alignment.dip_difference_rad * 180.0 / std::numbers::pi);
+                       alignment.field_ratio, alignment.dip_difference_rad * 180.0 / std::numbers::pi,
+                       alignment.saved_iron_refused ? "; the state file's iron does not explain it either: the iron "
+                                                      "has moved since it was saved, a battery or payload swapped"
+                                                    : "");
   }
   if (gnss.used > 0) return "no rest period and no GNSS motion to align on";
   if (source.fixes_after_imu > 0 && gnss.epochs == 0) {
