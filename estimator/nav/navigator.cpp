@@ -350,15 +350,16 @@ void Navigator::align(const ImuSample& s, double dt) {
   alignment_result_.saved_iron_refused = alignment_.saved_iron_refused();
 }
 
-void Navigator::offer_saved_iron() {
+std::array<EffectPrior, kEffectCount> Navigator::saved_iron() const {
   std::array<EffectPrior, kEffectCount> iron{};
-  bool any = false;
-  for (std::size_t e = 0; e < kEffectCount; ++e) {
-    if (!checked_by_the_field(static_cast<Effect>(e)) || !warm_.effects[e].given) continue;
-    iron[e] = warm_.effects[e];
-    any = true;
-  }
-  if (!any) return;
+  for (std::size_t e = 0; e < kEffectCount; ++e)
+    if (checked_by_the_field(static_cast<Effect>(e))) iron[e] = warm_.effects[e];
+  return iron;
+}
+
+void Navigator::offer_saved_iron() {
+  const std::array<EffectPrior, kEffectCount> iron = saved_iron();
+  if (std::none_of(iron.begin(), iron.end(), [](const EffectPrior& p) { return p.given; })) return;
   // Both corrections are affine in the reading (A^-1 (m - h)): the saved
   // iron's reading of the field is an affine map of the current one's, which
   // the rest's mean field is.
@@ -375,10 +376,11 @@ void Navigator::offer_saved_iron() {
 }
 
 void Navigator::keep_saved_iron() {
+  const std::array<EffectPrior, kEffectCount> iron = saved_iron();
   for (std::size_t e = 0; e < kEffectCount; ++e) {
     const auto effect = static_cast<Effect>(e);
-    if (!checked_by_the_field(effect) || !warm_.effects[e].given) continue;
-    EffectPrior p = warm_.effects[e];
+    if (!iron[e].given) continue;
+    EffectPrior p = iron[e];
     // One attitude's strength and dip cannot see every shift of the iron
     // (one across the horizontal field turns the heading and keeps both):
     // the hard iron is held to no better than the field the alignment trusts.

@@ -313,6 +313,8 @@ class Navigator {
   /// (warm_start.hpp checked_by_the_field), and carried when it aligned on it.
   void offer_saved_iron();
   void keep_saved_iron();
+  /// The restart's priors of the effects checked by the field (given where saved and carried).
+  std::array<EffectPrior, kEffectCount> saved_iron() const;
   void update_health(double t_now, double dt);
   void emit();
 
