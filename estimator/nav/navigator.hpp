@@ -216,6 +216,10 @@ class NavObserver {
   virtual void on_innovation(const InnovationRecord& rec) = 0;
 };
 
+/// The magnetometer's states: reserved, and switched on by its first field sample.
+inline constexpr Effect kMagEffects[] = {Effect::MagEarthField, Effect::MagHardIron, Effect::MagSoftIron,
+                                         Effect::MagMisalign};
+
 class Navigator {
  public:
   /// Everything sized here; nothing allocates afterwards.
@@ -263,6 +267,9 @@ class Navigator {
   const WarmStart& warm() const { return warm_; }
 
  private:
+  /// A time that never was: "not since".
+  static constexpr double kNever = -1e300;
+
   void push_filtered(ImuSample s);
   void process(const ImuSample& s);
   void align(const ImuSample& s, double dt);

@@ -39,4 +39,10 @@ WarmStart aged(const WarmStart& w, double age_s, const EffectTuning& tuning) {
   return out;
 }
 
+void keep_tighter(EffectPrior& saved, std::size_t k, double cold_value, double cold_sigma) {
+  if (saved.sigma[k] < cold_sigma) return;
+  saved.value[k] = cold_value;
+  saved.sigma[k] = cold_sigma;
+}
+
 }  // namespace sinu::est

@@ -44,4 +44,9 @@ WarmStart aged(const WarmStart& w, double age_s, const EffectTuning& tuning);
 /// attitude 13 deg and was reset (cold 0.4 deg).
 bool checked_by_the_field(Effect e);
 
+/// A restart's prior, component k: kept where tighter than what the unit
+/// would start from without it (cold_value, cold_sigma), else that: a saved
+/// sigma that has grown past it is no knowledge.
+void keep_tighter(EffectPrior& saved, std::size_t k, double cold_value, double cold_sigma);
+
 }  // namespace sinu::est
