@@ -127,10 +127,12 @@ struct AlignmentResult {
   double course_turn_rad = NAN, course_turn_t_s = NAN;
   double declination_rad = NAN;   // the declination used (magnetometer headings with one)
   double declination_drift_rad = 0.0;  // without a date: its change to either end of the model's span
-  // The field at rest was the Earth's only as corrected by a restart's saved
-  // iron (set_saved_iron_field): the navigator then carries that iron.
+  // The field at rest was read through a restart's saved iron
+  // (set_saved_iron_field), which made it the Earth's: the navigator then
+  // carries that iron.
   bool field_corrected_by_saved_iron = false;
-  // Not aligned: a restart's saved iron was tried and did not make the field the Earth's either.
+  // A restart's saved iron was tried and did not make the field the Earth's:
+  // aligned on the field as read, or not aligned when that fails too.
   bool saved_iron_refused = false;
   // The measured field against the model's, when the model was consulted:
   // its strength ratio and dip difference (why it was or was not used).
@@ -159,13 +161,14 @@ class CoarseAlignment {
   /// ratio and the dip difference [rad], also when they refused the field.
   double field_ratio() const { return field_ratio_; }
   double dip_difference_rad() const { return dip_difference_rad_; }
-  /// The last field check also tried the restart's saved iron, which did not explain the field either.
+  /// The last field check tried the restart's saved iron, which did not make the field the Earth's.
   bool saved_iron_refused() const { return saved_iron_refused_; }
   void end_course_check() { course_check_until_s_ = -1.0; }
-  /// A restart's saved magnetometer iron as a second reading of the field at
-  /// rest, tried where the field as corrected now is not the Earth's: the
-  /// rest's mean field becomes A m + b (the saved iron's correction of what
-  /// the current one gave). Only at rest: in motion the GNSS gives the heading.
+  /// A restart's saved magnetometer iron as the first reading of the field at
+  /// rest, taken where it makes the field the Earth's (else the field as
+  /// corrected now): the rest's mean field becomes A m + b (the saved iron's
+  /// correction of what the current one gave). Only at rest: in motion the
+  /// GNSS gives the heading.
   void set_saved_iron_field(const Eigen::Matrix3d& A, const Eigen::Vector3d& b) {
     saved_iron_A_ = A;
     saved_iron_b_ = b;

@@ -38,10 +38,11 @@ WarmStart aged(const WarmStart& w, double age_s, const EffectTuning& tuning);
 
 /// The magnetometer's iron (mag_hard_iron, mag_soft_iron,
 /// mag_motor_interference), which a battery or payload swap moves: a restart
-/// keeps it only where the field it corrects is the Earth's and the field
-/// without it is not (the navigator's alignment at rest, where nothing else
-/// gives a heading). Kept regardless, a hard iron 15 uT off turned the
-/// attitude 13 deg and was reset (cold 0.4 deg).
+/// keeps it only to align at rest, where the field it corrects is the
+/// Earth's (the navigator's alignment then reads the field through it first,
+/// and the field as read only when it does not). In motion the GNSS gives
+/// the heading and it stays out: kept regardless, a hard iron 15 uT off
+/// turned the attitude 13 deg and was reset (cold 0.4 deg).
 bool checked_by_the_field(Effect e);
 
 /// A restart's prior, component k: kept where tighter than what the unit

@@ -126,6 +126,12 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
                 "it (%s)\n",
                 num(r.alignment.course_turn_rad * 180.0 / std::numbers::pi).c_str(), r.alignment.course_turn_t_s,
                 est::kCourseTurnedCause);
+  if (r.aligned && r.alignment.field_corrected_by_saved_iron)
+    std::printf("  heading: from the field as the state file's iron corrects it (the iron has not moved since the "
+                "save: the corrected field is the Earth's)\n");
+  if (r.aligned && r.alignment.saved_iron_refused)
+    std::printf("  heading: from the field as read: the state file's iron does not make it the Earth's (the iron has "
+                "moved since it was saved, a battery or payload swapped), and the iron is learnt again\n");
   if (const std::string why_no_mag = r.mag_refused_reason(); !why_no_mag.empty())
     std::printf("  magnetometer NOT USED: %s\n", why_no_mag.c_str());
   if (r.gnss.without_height > 0 && r.gnss.used > 0)
