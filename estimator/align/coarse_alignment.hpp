@@ -111,6 +111,9 @@ inline constexpr const char* heading_source_name(HeadingSource s) {
 inline constexpr const char* kCourseTurnedCause =
     "the unit's x axis is not along the track: mounted turned, or moving sideways";
 
+/// What a restart did with the turn-on biases it saved (estimator/nav/warm_start.hpp checked_by_the_rest).
+enum class SavedBiases : std::uint8_t { None, Kept, Moved };
+
 struct AlignmentResult {
   NavState nav;
   Eigen::Vector3d att_sigma_rad{0.02, 0.02, 0.1};  // tilt about north, east; yaw
@@ -134,6 +137,9 @@ struct AlignmentResult {
   // A restart's saved iron was tried and did not make the field the Earth's:
   // aligned on the field as read, or not aligned when that fails too.
   bool saved_iron_refused = false;
+  // A restart's saved turn-on biases at a rest alignment (the navigator's
+  // keep_saved_biases): none offered, kept, or moved since the save.
+  SavedBiases saved_biases = SavedBiases::None;
   // The measured field against the model's, when the model was consulted:
   // its strength ratio and dip difference (why it was or was not used).
   double field_ratio = NAN, dip_difference_rad = NAN;

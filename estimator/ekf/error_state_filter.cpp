@@ -553,12 +553,10 @@ void ErrorStateFilter::seed_accel_bias_at_rest(NavState& nav, const Eigen::Vecto
   // "measure" a z scale from it that level flight cannot see (a hovering
   // quadcopter's 1 % z scale came out 0.04 +- 0.13 %).
   const BodyRates comp = compensate_at_rest(f_b);
-  const double f_norm = comp.specific_force_b_m_s2.norm();
   if (layout_.has(Effect::AccelBias)) {
     const Eigen::Index B = layout_.of(Effect::AccelBias).start;
     const Eigen::Vector3d u = f_b.normalized();  // "up" in the body frame
-    const double g = wgs84::normal_gravity_m_s2(nav.lat_rad, nav.h_m);
-    const Eigen::Vector3d b = view(Effect::AccelBias).vec3() + u * (f_norm - g);
+    const Eigen::Vector3d b = accel_bias_measured_at_rest(nav, f_b);
     for (Eigen::Index i = 0; i < 3; ++i) set_effect(Effect::AccelBias, i, b(i));
     MeasJacobian along = rest_rows(nav, comp.specific_force_b_m_s2, V, false).row(2);  // the vertical's rate
     along.middleCols(B, 3).setZero();
@@ -581,6 +579,17 @@ void ErrorStateFilter::seed_accel_bias_at_rest(NavState& nav, const Eigen::Vecto
   StateVec dx(n);
   if (fuse_measurement(P_, dx, m).accepted) feedback(dx, nav);
   P_.block(A, A, 2, 2) += tilt_noise;
+}
+
+Eigen::Vector3d ErrorStateFilter::accel_bias_measured_at_rest(const NavState& nav, const Eigen::Vector3d& f_b) const {
+  const double f_norm = compensate_at_rest(f_b).specific_force_b_m_s2.norm();
+  const double g = wgs84::normal_gravity_m_s2(nav.lat_rad, nav.h_m);
+  return view(Effect::AccelBias).vec3() + f_b.normalized() * (f_norm - g);
+}
+
+double ErrorStateFilter::accel_bias_along_gravity_at_rest(const NavState& nav, const Eigen::Vector3d& f_b) const {
+  if (!layout_.has(Effect::AccelBias) || !(f_b.norm() > 0.0)) return NAN;
+  return f_b.normalized().dot(accel_bias_measured_at_rest(nav, f_b));
 }
 
 double ErrorStateFilter::sensor_error(Eigen::Index axis) const { return sensor_hat_(hat_index(axis)); }

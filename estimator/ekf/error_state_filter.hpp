@@ -163,6 +163,9 @@ class ErrorStateFilter {
   /// seed_attitude's noise on top.
   void seed_accel_bias_at_rest(NavState& nav, const Eigen::Vector3d& mean_specific_force_b_m_s2,
                                double sigma_along_m_s2);
+  /// What seed_accel_bias_at_rest would measure of the accelerometer bias
+  /// along gravity (u . b, u = f_b / |f_b|) [m/s^2]; the filter unchanged.
+  double accel_bias_along_gravity_at_rest(const NavState& nav, const Eigen::Vector3d& mean_specific_force_b_m_s2) const;
 
   /// At rest, after seed_gyro_bias: the rest's mean rate is the sum of what
   /// enters the gyro there (the bias, a g-sensitivity's columns at the rest's
@@ -189,6 +192,9 @@ class ErrorStateFilter {
   void put_gyro_bias(const Eigen::Vector3d& bias_rad_s, double sigma_rad_s);
   /// A rest window's mean specific force, compensated with the current estimates.
   BodyRates compensate_at_rest(const Eigen::Vector3d& f_b) const;
+  /// The accelerometer bias with its part along gravity as the rest measures
+  /// it, |f| - g of the mean compensated with the current estimates.
+  Eigen::Vector3d accel_bias_measured_at_rest(const NavState& nav, const Eigen::Vector3d& f_b) const;
   /// The error dynamics' rate rows (`rows`: the velocity's or the attitude's)
   /// at rest with specific force f_b: the columns of the states that enter a
   /// rest window's mean; the navigation states' zero but, with_tilt, the

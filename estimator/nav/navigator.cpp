@@ -301,9 +301,10 @@ void Navigator::align(const ImuSample& s, double dt) {
     filter_.seed_gyro_bias(res.gyro_bias_rad_s, f_b, res.gyro_bias_sigma_rad_s);
     if (res.at_rest) {
       // Floor: normal gravity against the site's true gravity (anomalies ~1e-3 g).
+      const double sigma_along = std::max(res.rest_specific_force_sigma_m_s2, 0.01);
+      if (warm_.given) keep_saved_biases(res.rest_specific_force_b_m_s2, sigma_along);
       filter_.correlate_gyro_bias_at_rest(nav_, res.rest_specific_force_b_m_s2);
-      filter_.seed_accel_bias_at_rest(nav_, res.rest_specific_force_b_m_s2,
-                                      std::max(res.rest_specific_force_sigma_m_s2, 0.01));
+      filter_.seed_accel_bias_at_rest(nav_, res.rest_specific_force_b_m_s2, sigma_along);
     }
     filter_.set_gps_bias_sigma(z.sigma_ned_m, 0.0, white_scale(z));
     // The receiver's correlated error as the unit knew it before the restart,

@@ -320,6 +320,11 @@ class Navigator {
   /// (warm_start.hpp checked_by_the_field), and carried when it aligned on it.
   void offer_saved_iron();
   void keep_saved_iron();
+  /// At a rest alignment, after seed_gyro_bias: the state file's turn-on
+  /// biases, kept (the accelerometer's as its prior) where the rest measures
+  /// them again (warm_start.hpp checked_by_the_rest); says which in
+  /// alignment_result_.saved_biases.
+  void keep_saved_biases(const Eigen::Vector3d& f_b, double sigma_along_m_s2);
   /// The restart's priors of the effects checked by the field (given where saved and carried).
   std::array<EffectPrior, kEffectCount> saved_iron() const;
   void update_health(double t_now, double dt);

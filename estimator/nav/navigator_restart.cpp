@@ -47,6 +47,32 @@ void Navigator::keep_saved_iron() {
   }
 }
 
+void Navigator::keep_saved_biases(const Eigen::Vector3d& f_b, double sigma_along_m_s2) {
+  const EffectPrior& gyro = warm_.effects[static_cast<std::size_t>(Effect::GyroBias)];
+  const EffectPrior& accel = warm_.effects[static_cast<std::size_t>(Effect::AccelBias)];
+  if (!gyro.given || !accel.given) return;
+  constexpr double kSigmas = 3.0;
+  // The gyro: seed_gyro_bias has just put the rest's measurement into the states.
+  bool moved = false;
+  for (Eigen::Index i = 0; i < 3; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const double sigma = std::hypot(filter_.effect_sigma(Effect::GyroBias, i), gyro.sigma[k]);
+    moved |= !(std::abs(filter_.effect(Effect::GyroBias, i) - gyro.value[k]) <= kSigmas * sigma);
+  }
+  // The accelerometer along gravity, as the levelling will measure it.
+  const Eigen::Vector3d u = f_b.normalized();
+  double saved_along = 0.0, saved_var = 0.0;
+  for (Eigen::Index i = 0; i < 3; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    saved_along += u(i) * accel.value[k];
+    saved_var += u(i) * u(i) * accel.sigma[k] * accel.sigma[k];
+  }
+  const double measured = filter_.accel_bias_along_gravity_at_rest(nav_, f_b);
+  moved |= !(std::abs(measured - saved_along) <= kSigmas * std::sqrt(sigma_along_m_s2 * sigma_along_m_s2 + saved_var));
+  alignment_result_.saved_biases = moved ? SavedBiases::Moved : SavedBiases::Kept;
+  if (!moved) filter_.set_prior(Effect::AccelBias, accel);  // across gravity it levels the unit
+}
+
 WarmStart Navigator::warm_state() const {
   WarmStart w;
   if (!aligned()) return w;
@@ -85,7 +111,8 @@ bool Navigator::warm_start(const WarmStart& saved, double age_s) {
       w.given = false;
       continue;
     }
-    if (checked_by_the_field(effect)) continue;  // at the alignment, by the field (offer_saved_iron)
+    // At the alignment: by the field (offer_saved_iron), by the rest (keep_saved_biases).
+    if (checked_by_the_field(effect) || checked_by_the_rest(effect)) continue;
     // Per component, against the prior this unit would start from (a model
     // file's, else the vocabulary's).
     const EffectPrior& cold = filter_.tuning().prior[e];

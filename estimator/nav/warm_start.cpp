@@ -5,23 +5,17 @@
 
 namespace sinu::est {
 
-namespace {
-
-/// What a power cycle changes (warm_start.hpp).
-bool lost_in_power_cycle(Effect e) { return e == Effect::AccelBias || e == Effect::GyroBias; }
-
-}  // namespace
-
 bool checked_by_the_field(Effect e) {
   return e == Effect::MagHardIron || e == Effect::MagSoftIron || e == Effect::MagMotorInterference;
 }
+
+bool checked_by_the_rest(Effect e) { return e == Effect::AccelBias || e == Effect::GyroBias; }
 
 WarmStart aged(const WarmStart& w, double age_s, const EffectTuning& tuning) {
   WarmStart out = w;
   const double age = std::max(0.0, age_s);
   for (std::size_t e = 0; e < kEffectCount; ++e) {
     EffectPrior& p = out.effects[e];
-    if (lost_in_power_cycle(static_cast<Effect>(e))) p.given = false;
     if (!p.given) continue;
     const auto n = static_cast<std::size_t>(kEffectDims[e]);
     if (static_cast<Effect>(e) == Effect::GpsPositionBias) {

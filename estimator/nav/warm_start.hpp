@@ -6,7 +6,8 @@
 // temperature they refer to and the noise levels learnt from the
 // innovations. The attitude, velocity and position are not in it: a
 // restarted unit aligns again, in motion, and takes these as its priors,
-// aged, less what a power cycle changes (aged() below).
+// aged; what a power cycle or a battery swap changes only where the data
+// say it has not changed (checked_by_the_field, checked_by_the_rest below).
 // The board keeps it in a state file (firmware/board/state_file.hpp).
 #include <array>
 #include <Eigen/Core>
@@ -29,12 +30,18 @@ struct WarmStart {
 /// The same, `age_s` later, as a restart's priors: each effect's sigma grown
 /// by its random walk over the age; the receiver's correlated error decayed
 /// towards zero and its variance towards the GM's level (tau from the
-/// tuning). Left out, though the state file records them, are the turn-on
-/// biases (accel_bias, gyro_bias), which a power cycle changes and a restart
-/// cannot tell from a reboot: a restart that kept a gyro bias which had
-/// moved by 0.3 deg/s flew with 0.44 deg of attitude error, cold 0.25; one
-/// of 1.1 deg/s was reset. They come back from the data within a minute.
+/// tuning).
 WarmStart aged(const WarmStart& w, double age_s, const EffectTuning& tuning);
+
+/// The turn-on biases (accel_bias, gyro_bias), which a power cycle draws
+/// anew and a reboot keeps: a restart keeps them only when it aligns at rest
+/// and the rest measures the saved gyro bias and the saved accelerometer bias
+/// along gravity again (within 3 sigma). Then the saved accelerometer bias
+/// across gravity, which no rest can tell from a tilt, levels the unit. In
+/// motion nothing checks them and they stay out: kept regardless, a gyro
+/// bias that had moved by 0.3 deg/s flew with 0.44 deg of attitude error,
+/// cold 0.25; one of 1.1 deg/s was reset.
+bool checked_by_the_rest(Effect e);
 
 /// The magnetometer's iron (mag_hard_iron, mag_soft_iron,
 /// mag_motor_interference), which a battery or payload swap moves: a restart

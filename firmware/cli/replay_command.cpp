@@ -132,6 +132,12 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
   if (r.aligned && r.alignment.saved_iron_refused)
     std::printf("  heading: from the field as read: the state file's iron does not make it the Earth's (the iron has "
                 "moved since it was saved, a battery or payload swapped), and the iron is learnt again\n");
+  if (r.aligned && r.alignment.saved_biases == est::SavedBiases::Kept)
+    std::printf("  turn-on biases: the state file's, kept: the rest measured the same gyro bias and accelerometer bias "
+                "along gravity (no power cycle), so the saved accelerometer bias across gravity levels the unit\n");
+  if (r.aligned && r.alignment.saved_biases == est::SavedBiases::Moved)
+    std::printf("  turn-on biases: the rest measured other ones than the state file's (a power cycle): learnt "
+                "again\n");
   if (const std::string why_no_mag = r.mag_refused_reason(); !why_no_mag.empty())
     std::printf("  magnetometer NOT USED: %s\n", why_no_mag.c_str());
   if (r.gnss.without_height > 0 && r.gnss.used > 0)

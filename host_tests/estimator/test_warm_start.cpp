@@ -48,11 +48,19 @@ TEST(WarmStart, AgesEachEffectByItsOwnProcess) {
   const auto& old = day.effects[static_cast<std::size_t>(Effect::GpsPositionBias)];
   EXPECT_NEAR(old.value[1], 0.0, 1e-12);
   EXPECT_NEAR(old.sigma[1], 1.2, 1e-12);
-  // The turn-on biases are not a restart's to keep (the IMU may have lost
-  // power); effects the saved filter did not carry stay absent.
-  EXPECT_FALSE(a.effects[static_cast<std::size_t>(Effect::AccelBias)].given);
-  EXPECT_FALSE(a.effects[static_cast<std::size_t>(Effect::GyroBias)].given);
+  // Effects the saved filter did not carry stay absent.
   EXPECT_FALSE(a.effects[static_cast<std::size_t>(Effect::LeverArm)].given);
+  // The turn-on biases are aged like any walk and offered to a rest
+  // alignment, which keeps them only where it measures them again (the IMU
+  // may have lost power: checked_by_the_rest).
+  const auto& accel = a.effects[static_cast<std::size_t>(Effect::AccelBias)];
+  ASSERT_TRUE(accel.given);
+  EXPECT_TRUE(checked_by_the_rest(Effect::AccelBias));
+  EXPECT_TRUE(checked_by_the_rest(Effect::GyroBias));
+  EXPECT_FALSE(checked_by_the_rest(Effect::MagHardIron));
+  EXPECT_DOUBLE_EQ(accel.value[0], 0.1);
+  const double accel_walk = tuning.walk(Effect::AccelBias);
+  EXPECT_NEAR(accel.sigma[0], std::sqrt(0.004 * 0.004 + accel_walk * accel_walk * age), 1e-15);
   // The iron is aged like any walk and offered to the alignment, which keeps
   // it only where the field says it has not moved (checked_by_the_field).
   const auto& iron = a.effects[static_cast<std::size_t>(Effect::MagHardIron)];

@@ -21,7 +21,7 @@ std::vector<std::string> cells(const std::string& line) {
 }  // namespace
 
 ErrorSeries error_series(const std::string& nav_csv, const std::string& truth_csv) {
-  std::vector<double> tt, lat, lon, h, yaw, vd;
+  std::vector<double> tt, lat, lon, h, yaw, vd, roll, pitch;
   {
     std::ifstream in(truth_csv);
     std::string line;
@@ -34,6 +34,8 @@ ErrorSeries error_series(const std::string& nav_csv, const std::string& truth_cs
       lon.push_back(std::stod(c[2]));
       h.push_back(c.size() > 3 && !c[3].empty() ? std::stod(c[3]) : NAN);
       yaw.push_back(c.size() > 9 && !c[9].empty() ? std::stod(c[9]) : NAN);
+      roll.push_back(c.size() > 7 && !c[7].empty() ? std::stod(c[7]) : NAN);
+      pitch.push_back(c.size() > 8 && !c[8].empty() ? std::stod(c[8]) : NAN);
       vd.push_back(c.size() > 6 && !c[6].empty() ? std::stod(c[6]) : NAN);
     }
   }
@@ -46,6 +48,7 @@ ErrorSeries error_series(const std::string& nav_csv, const std::string& truth_cs
     return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
   };
   const std::size_t flags_col = column("flags"), yaw_col = column("yaw"), vd_col = column("vd");
+  const std::size_t roll_col = column("roll"), pitch_col = column("pitch");
   const std::size_t h_col = column("h"), sigma_pd_col = column("sigma_pd_m");
   std::size_t k = 0;
   while (std::getline(in, line)) {
@@ -64,6 +67,9 @@ ErrorSeries error_series(const std::string& nav_csv, const std::string& truth_cs
     const double yaw_true = a < 0.5 ? yaw[k] : yaw[k + 1];
     s.err_yaw_deg.push_back(std::remainder(std::stod(c[yaw_col]) - yaw_true, 360.0));
     s.err_vd_m_s.push_back(std::stod(c[vd_col]) - (vd[k] + a * (vd[k + 1] - vd[k])));
+    s.err_tilt_deg.push_back(
+        std::hypot(std::remainder(std::stod(c[roll_col]) - (roll[k] + a * (roll[k + 1] - roll[k])), 360.0),
+                   std::stod(c[pitch_col]) - (pitch[k] + a * (pitch[k + 1] - pitch[k]))));
     s.err_height_m.push_back(std::stod(c[h_col]) - (h[k] + a * (h[k + 1] - h[k])));
     s.sigma_pd_m.push_back(sigma_pd_col < c.size() ? std::stod(c[sigma_pd_col]) : NAN);
   }

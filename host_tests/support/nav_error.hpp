@@ -11,6 +11,7 @@ namespace sinu::test {
 
 struct ErrorSeries {
   std::vector<double> t, err_h, err_yaw_deg, err_vd_m_s;  // err_vd: NaN where truth has no vd
+  std::vector<double> err_tilt_deg;  // hypot of the roll and pitch errors (NaN where truth has none)
   std::vector<double> err_height_m, sigma_pd_m;           // nav h - truth h (NaN where truth has none); its sigma
   std::vector<std::uint32_t> flags;
 };

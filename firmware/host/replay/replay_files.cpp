@@ -108,6 +108,9 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
                        {"heading_from", est::heading_source_name(a.heading_source)},
                        {"field_corrected_by_saved_iron", a.field_corrected_by_saved_iron},
                        {"saved_iron_refused", a.saved_iron_refused},
+                       {"saved_biases", a.saved_biases == est::SavedBiases::Kept    ? json("kept")
+                                        : a.saved_biases == est::SavedBiases::Moved ? json("moved")
+                                                                                    : json(nullptr)},
                        {"declination_deg", num(a.declination_rad * kDeg)},
                        {"field_over_model", num(a.field_ratio)},
                        {"dip_minus_model_deg", num(a.dip_difference_rad * kDeg)},
