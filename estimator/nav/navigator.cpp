@@ -65,7 +65,7 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   course_rate_rad_s_ = yaw_rate_rad_s_ = 0.0;
   mag_reject_since_s_ = -1.0;
   have_prev_ = have_raw_ = mag_started_ = in_timeout_ = false;
-  last_gap_t_s_ = -1e300;
+  last_gap_t_s_ = disturbed_t_s_ = -1e300;
   horizon_now_s_ = cfg.horizon_s;
   raw_period_s_ = period_s_ = horizontal_accel_m_s2_ = accel_diff_var_ = gyro_diff_var_ = 0.0;
   clip_until_t_s_.fill(kNever);
@@ -246,6 +246,7 @@ void Navigator::process(const ImuSample& s) {
   if (latency.active() && s.t_s - last_gap_t_s_ < cfg_.latency_freeze_after_gap_s) {
     frozen_.set(static_cast<std::size_t>(latency.start));
   }
+  if (s.t_s - disturbed_t_s_ < cfg_.gps_bias_hold_after_disturbance_s) freeze(Effect::GpsPositionBias);
 
   fuse_due_gnss(s.t_s, dt, r1);
   fuse_magnetometer(s, r1);
@@ -375,6 +376,17 @@ void Navigator::widen_for_imu_errors(const ImuSample& s, double dt) {
     var_w += (cfg_.gyro_scale_noise_rt_s * s.angular_rate_b_rad_s).cwiseAbs2() * dt;
   if (var_f.any()) filter_.add_block_noise(filter_.layout().vel, C * var_f.asDiagonal() * C.transpose());
   if (var_w.any()) filter_.add_block_noise(filter_.layout().att, C * var_w.asDiagonal() * C.transpose());
+}
+
+void Navigator::freeze(Effect e) {
+  const Slice& states = filter_.layout().of(e);
+  if (!states.active()) return;
+  for (Eigen::Index i = 0; i < states.size; ++i) frozen_.set(static_cast<std::size_t>(states.start + i));
+}
+
+void Navigator::disturbed(double t_s) {
+  disturbed_t_s_ = t_s;
+  freeze(Effect::GpsPositionBias);  // from this update on (process() renews it each sample)
 }
 
 void Navigator::begin_reset(double t_meas) {

@@ -178,6 +178,13 @@ struct NavigatorConfig {
   double gap_accel_sigma_m_s2 = 1.0;  // unknown acceleration and rate during a gap, on top of
   double gap_rate_sigma_rad_s = 0.02; // half the change across it
   double latency_freeze_after_gap_s = 2.0;  // the GPS latency is not learnt this long after a gap
+  // The receiver's correlated error is not learnt this long after the
+  // solution was disturbed (disturbed()): the fixes' misfit then is the
+  // solution's own, and a slow state that took it would hold it for minutes.
+  double gps_bias_hold_after_disturbance_s = 10.0;
+  // Disturbed too when a fix arrives while the solution's horizontal position
+  // sigma exceeds this many times the fix's.
+  double disturbed_position_sigmas = 3.0;
   // Heading observability: while the heading is uncertain (sigma above
   // yaw_freeze_sigma_rad) and the horizontal acceleration is below
   // yaw_observable_accel_m_s2 (at rest, steady flight), no update may move it:
@@ -291,6 +298,15 @@ class Navigator {
   /// The largest latency the longest horizon can serve (two IMU periods of margin).
   double max_gps_latency_s() const { return std::max(0.0, horizon_limit_s() - 2.0 * period_s_ - 0.01); }
   void recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas);
+  /// Effect e's states into frozen_: no update moves them (until frozen_ is next rebuilt).
+  void freeze(Effect e);
+  /// The solution's own error has outgrown the fixes' (a reset to GNSS, an
+  /// IMU gap in motion, the first fix after an outage, a position widened
+  /// by its misfit): the receiver's correlated error is held for
+  /// gps_bias_hold_after_disturbance_s. On a real quadcopter with a generous
+  /// receiver (GST 4.6x its error) it took 2 m of a 3-s IMU gap's drift from
+  /// one fix and held the solution 4 m off for minutes.
+  void disturbed(double t_s);
   /// Before any reset: P brought to now, the first reset's time kept.
   void begin_reset(double t_meas);
   /// The fix's height to the vertical check; resets vd when it has run away.
@@ -372,6 +388,7 @@ class Navigator {
   std::array<int, kSensorAxes> clip_run_{};              // consecutive clipped intervals, per axis
   double period_s_ = 0.0;                                // nominal interval of the processed stream
   double last_gap_t_s_ = -1e300;                         // end of the latest IMU gap
+  double disturbed_t_s_ = -1e300;                        // the latest disturbed()
   double horizon_now_s_ = 0.0;                           // the horizon in use (grows with the latency estimate)
   double horizontal_accel_m_s2_ = 0.0;                   // smoothed (1 s) horizontal specific force, NED
   double accel_diff_var_ = 0.0, gyro_diff_var_ = 0.0;    // mean squared sample-to-sample differences

@@ -44,6 +44,15 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
         z.sigma_ned_m.z() *= pos_scale_v_.sigma();
       }
       filter_.set_gps_bias_sigma(z.sigma_ned_m, t_meas - last_gnss_pos_t_s_, white_scale(z));
+      // The solution knows its position far less well than the fix states
+      // it (dead-reckoned through an outage, an IMU gap in motion): the
+      // misfit is its own.
+      const Eigen::Index p = filter_.layout().pos.start;
+      const double fix_var = z.sigma_ned_m.head<2>().squaredNorm() / 2.0;
+      if (std::max(filter_.P()(p, p), filter_.P()(p + 1, p + 1)) >
+          cfg_.disturbed_position_sigmas * cfg_.disturbed_position_sigmas * fix_var) {
+        disturbed(t_now);
+      }
       last_gnss_pos_t_s_ = t_meas;
       bool ok = fuse(AidingSource::GnssPosition,
                      gnss_position_measurement(filter_, nav_, dt_back, z, cfg_.gate_sigma), t_meas);
@@ -53,9 +62,12 @@ void Navigator::fuse_due_gnss(double t_now, double dt, const BodyRates& now) {
         // A misfit too small to be a GNSS jump: the filter claimed more than it
         // knew. Widen the position by the misfit and fuse the epoch again
         // (no waiting for a reset while a centimetre receiver is ignored).
+        // The misfit is the solution's: the receiver's correlated error does
+        // not learn from it (disturbed).
         const Eigen::Vector3d y = last_result_.innovation;
         filter_.add_block_noise(filter_.layout().pos, y.cwiseAbs2().asDiagonal());
         ++counters_.position_inflations;
+        disturbed(t_now);
         ok = fuse(AidingSource::GnssPosition, gnss_position_measurement(filter_, nav_, dt_back, z, cfg_.gate_sigma),
                   t_meas);
       }
@@ -215,6 +227,7 @@ void Navigator::check_course(const GnssObservation& z, double t_now, double dt_b
 
 void Navigator::recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas) {
   if (action == RecoveryAction::None) return;
+  disturbed(t_meas);
   vertical_.restart();
   heading_.restart();
   begin_reset(t_meas);
