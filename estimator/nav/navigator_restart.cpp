@@ -1,5 +1,7 @@
 // The restart: what the navigator saves for one (warm_state), what it takes
-// back (warm_start), and the saved iron the alignment at rest may use.
+// back (warm_start), and what a power cycle or a battery swap may have
+// changed, which only an alignment at rest checks: the saved iron (through
+// the field) and the turn-on biases (through the rest).
 #include "estimator/nav/navigator.hpp"
 
 #include <algorithm>
