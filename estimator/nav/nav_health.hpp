@@ -66,6 +66,7 @@ struct NavCounters {
   std::uint64_t mag_reanchors = 0;       // hard iron re-anchored after a disturbance
   std::uint64_t gyro_bias_releases = 0;  // gyro bias about the vertical widened: the heading check, a yaw reset
   std::uint64_t position_inflations = 0;  // position widened by a small misfit, the epoch fused again
+  std::uint64_t gnss_bias_holds = 0;     // the receiver's correlated error held after a disturbance (Navigator::disturbed)
   std::uint64_t horizontal_fixes = 0;    // fixes without a height (RMC or GLL alone) fused north and east
   std::uint64_t course_held = 0;         // velocities whose course the receiver held at low speed: speed only
   std::uint64_t gnss_timeouts = 0;       // times the GNSS position stopped for gnss_timeout_s

@@ -385,6 +385,7 @@ void Navigator::freeze(Effect e) {
 }
 
 void Navigator::disturbed(double t_s) {
+  if (!(t_s - disturbed_t_s_ < cfg_.gps_bias_hold_after_disturbance_s)) ++counters_.gnss_bias_holds;  // a new hold
   disturbed_t_s_ = t_s;
   freeze(Effect::GpsPositionBias);  // from this update on (process() renews it each sample)
 }

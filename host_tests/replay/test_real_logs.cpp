@@ -341,9 +341,11 @@ TEST(RealLogs, TheQuadcopterIsBackWithItsAutopilotWithinThirtySecondsOfAFault) {
     const ErrorSeries e = error_series(dir.file(name + "_out") + "/nav.csv", dir.file(name) + "/truth.csv");
     // From 30 s after the fault's end, for a minute.
     const double after = rms_between(e, end + 30.0, end + 90.0), as_clean = rms_between(clean, end + 30.0, end + 90.0);
-    std::printf("uav_log171, %s at %.1f s: %.3f m from the peer 30-90 s after it, %.3f m without it\n", name.c_str(),
-                t_fault, after, as_clean);
+    const auto s = read_json(dir.file(name + "_out") + "/summary.json");
+    std::printf("uav_log171, %s at %.1f s: %.3f m from the peer 30-90 s after it, %.3f m without it; %d hold(s)\n",
+                name.c_str(), t_fault, after, as_clean, s["health"]["gnss_bias_holds"].get<int>());
     EXPECT_LT(after, 2.0 * as_clean) << name;
+    EXPECT_GE(s["health"]["gnss_bias_holds"].get<int>(), 1) << name << ": the fault is a disturbance";
   }
 }
 

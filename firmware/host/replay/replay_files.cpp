@@ -184,6 +184,7 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
                   {"magnetometer_reanchors", c.mag_reanchors},
                   {"gyro_bias_releases", c.gyro_bias_releases},
                   {"position_inflations", c.position_inflations},
+                  {"gnss_bias_holds", c.gnss_bias_holds},
                   {"first_reset_t", c.resets() ? json(c.first_reset_t_s) : json(nullptr)},
                   {"gnss_timeouts", c.gnss_timeouts},
                   {"gnss_timeout_s", c.gnss_timeout_total_s}};
