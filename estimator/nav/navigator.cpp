@@ -242,11 +242,8 @@ void Navigator::process(const ImuSample& s) {
     }
   }
   // The latency is seen through the acceleration, which a gap leaves unknown.
-  const Slice latency = filter_.layout().of(Effect::GpsLatency);
-  if (latency.active() && s.t_s - last_gap_t_s_ < cfg_.latency_freeze_after_gap_s) {
-    frozen_.set(static_cast<std::size_t>(latency.start));
-  }
-  if (s.t_s - disturbed_t_s_ < cfg_.gps_bias_hold_after_disturbance_s) freeze(Effect::GpsPositionBias);
+  if (s.t_s - last_gap_t_s_ < cfg_.latency_freeze_after_gap_s) freeze(Effect::GpsLatency);
+  if (holding_gps_bias(s.t_s)) freeze(Effect::GpsPositionBias);
 
   fuse_due_gnss(s.t_s, dt, r1);
   fuse_magnetometer(s, r1);
@@ -385,7 +382,7 @@ void Navigator::freeze(Effect e) {
 }
 
 void Navigator::disturbed(double t_s) {
-  if (!(t_s - disturbed_t_s_ < cfg_.gps_bias_hold_after_disturbance_s)) ++counters_.gnss_bias_holds;  // a new hold
+  if (!holding_gps_bias(t_s)) ++counters_.gnss_bias_holds;  // a new hold
   disturbed_t_s_ = t_s;
   freeze(Effect::GpsPositionBias);  // from this update on (process() renews it each sample)
 }

@@ -307,6 +307,8 @@ class Navigator {
   /// receiver (GST 4.6x its error) it took 2 m of a 3-s IMU gap's drift from
   /// one fix and held the solution 4 m off for minutes.
   void disturbed(double t_s);
+  /// Within gps_bias_hold_after_disturbance_s of the latest disturbed().
+  bool holding_gps_bias(double t_s) const { return t_s - disturbed_t_s_ < cfg_.gps_bias_hold_after_disturbance_s; }
   /// Before any reset: P brought to now, the first reset's time kept.
   void begin_reset(double t_meas);
   /// The fix's height to the vertical check; resets vd when it has run away.
