@@ -98,6 +98,11 @@ WarmStart Navigator::warm_state() const {
   w.mag_sigma_uT = mag_started_ ? mag_noise_.sigma() : 0.0;
   w.gnss_white_scale = gnss_white_scale();
   w.gnss_position_scale = gnss_position_scale();
+  if (cfg_.vehicle == VehicleKind::Auto) {
+    w.vehicle = vehicle_.guess();
+    w.on_bracket = vehicle_.on_bracket();
+    w.vehicle_axes = vehicle_axes_in_use(filter_, vehicle_.axes());
+  }
   return w;
 }
 
@@ -109,7 +114,8 @@ bool Navigator::warm_start(const WarmStart& saved, double age_s) {
     const auto effect = static_cast<Effect>(e);
     EffectPrior& w = warm_.effects[e];
     if (!w.given) continue;
-    if (!L.carries(effect)) {  // this unit is configured without it
+    // Configured without it; or the unit's yaw on the vehicle, which the saved vehicle axes carry.
+    if (!L.carries(effect) || effect == Effect::VehicleMount) {
       w.given = false;
       continue;
     }
@@ -125,6 +131,7 @@ bool Navigator::warm_start(const WarmStart& saved, double age_s) {
     filter_.set_prior(effect, w);
   }
   offer_saved_iron();
+  if (cfg_.vehicle == VehicleKind::Auto) vehicle_.restore(warm_.vehicle, warm_.vehicle_axes, warm_.on_bracket);
   // Learnt noise levels, where this unit learns them (a sigma the user gave stays).
   if (cfg_.gnss_velocity_noise.enabled && warm_.gnss_velocity_sigma_m_s > 0.0) {
     vel_noise_.configure(cfg_.gnss_velocity_noise, warm_.gnss_velocity_sigma_m_s);

@@ -77,6 +77,17 @@ class VehicleDetector {
     have_yaw_ = false;
     nhc_tried_ = nhc_rejected_ = 0;
     window_start_s_ = 0.0;
+    restored_ = false;
+  }
+  /// A restart's: a ground vehicle and its axes found before it (the state file; Undecided or Reverted there:
+  /// decided again here). The same vehicle carries the unit; a constraint that then fails still reverts it.
+  void restore(VehicleGuess guess, const VehicleAxes& axes, bool on_bracket) {
+    restart();
+    if (guess != VehicleGuess::Ground) return;
+    guess_ = guess;
+    axes_ = axes;
+    on_bracket_ = on_bracket;
+    restored_ = true;
   }
   /// One processed sample: the solution (aided by GNSS within the last
   /// second: `aided`) and its interval.
@@ -90,6 +101,8 @@ class VehicleDetector {
   const VehicleAxes& axes() const { return axes_; }
   bool on_bracket() const { return on_bracket_; }
   double decided_at_s() const { return decided_at_s_; }
+  /// The guess came from before a restart (restore), not from this run's motion.
+  bool restored() const { return restored_; }
   /// The evidence so far (or at the decision): the body velocity's RMS along axes() over the memory [m/s], time
   /// moving [s].
   double lateral_rms_m_s() const { return rms_along(axes_.lateral_b); }
@@ -113,7 +126,7 @@ class VehicleDetector {
   VehicleAxes axes_;
   bool on_bracket_ = false;
   double last_yaw_rad_ = 0.0, last_course_rad_ = 0.0, decided_at_s_ = 0.0, window_start_s_ = 0.0;
-  bool have_yaw_ = false;
+  bool have_yaw_ = false, restored_ = false;
   int nhc_tried_ = 0, nhc_rejected_ = 0;
 };
 

@@ -4,7 +4,8 @@
 // restarted): every effect state's value and sigma (the turn-on biases, the
 // receiver's latency and correlated error, the hard iron, ...), the
 // temperature they refer to and the noise levels learnt from the
-// innovations. The attitude, velocity and position are not in it: a
+// innovations, and what vehicle carries the unit. The attitude, velocity
+// and position are not in it: a
 // restarted unit aligns again, in motion, and takes these as its priors,
 // aged; what a power cycle or a battery swap changes only where the data
 // say it has not changed (checked_by_the_field, checked_by_the_rest below).
@@ -13,6 +14,8 @@
 #include <Eigen/Core>
 
 #include "estimator/ekf/effect_tuning.hpp"
+#include "estimator/ekf/vehicle_axes.hpp"
+#include "estimator/nav/vehicle_detector.hpp"
 
 namespace sinu::est {
 
@@ -25,6 +28,14 @@ struct WarmStart {
   double mag_sigma_uT = 0.0;
   Eigen::Vector2d gnss_white_scale = Eigen::Vector2d::Zero();     // horizontal, vertical
   Eigen::Vector2d gnss_position_scale = Eigen::Vector2d::Zero();
+  // What the vehicle detector found (vehicle = auto): the vehicle that
+  // carries the unit outlives a reboot. A restart in motion takes it at once
+  // (the non-holonomic constraint from the alignment, still reverted if it
+  // fails) instead of after half a minute of driving and a turn. Only
+  // Ground is taken back; the axes have the vehicle_mount estimate turned in.
+  VehicleGuess vehicle = VehicleGuess::Undecided;
+  bool on_bracket = false;
+  VehicleAxes vehicle_axes;
 };
 
 /// The same, `age_s` later, as a restart's priors: each effect's sigma grown

@@ -30,6 +30,40 @@ bool optional_numbers(const nlohmann::json& j, const char* key, Eigen::Index n, 
   return true;
 }
 
+/// The optional "vehicle" object: what the vehicle detector had found.
+bool read_vehicle(const nlohmann::json& j, const std::string& path, est::WarmStart& w, std::string& error) {
+  if (!j.contains("vehicle")) return true;
+  const nlohmann::json& v = j["vehicle"];
+  const std::string where = path + ": vehicle";
+  if (!v.is_object() || !v.contains("guess") || !v["guess"].is_string()) {
+    error = where + ": expected an object with \"guess\": \"ground\"";
+    return false;
+  }
+  const std::string guess = v["guess"].get<std::string>();
+  if (guess != "ground") {
+    error = where + ".guess: \"" + guess + "\": expected \"ground\"";
+    return false;
+  }
+  est::VehicleAxes axes;
+  if (!optional_numbers(v, "lateral_b", 3, axes.lateral_b.data(), where, error) ||
+      !optional_numbers(v, "vertical_b", 3, axes.vertical_b.data(), where, error))
+    return false;
+  // Unit vectors at right angles (to the file's 17 digits; 1e-6 leaves room for an edited one).
+  if (std::abs(axes.lateral_b.norm() - 1.0) > 1e-6 || std::abs(axes.vertical_b.norm() - 1.0) > 1e-6 ||
+      std::abs(axes.lateral_b.dot(axes.vertical_b)) > 1e-6) {
+    error = where + ": lateral_b and vertical_b: expected two unit vectors at right angles";
+    return false;
+  }
+  if (v.contains("on_bracket") && !v["on_bracket"].is_boolean()) {
+    error = where + ".on_bracket: expected true or false";
+    return false;
+  }
+  w.vehicle = est::VehicleGuess::Ground;
+  w.on_bracket = v.value("on_bracket", false);
+  w.vehicle_axes = axes;
+  return true;
+}
+
 }  // namespace
 
 bool read_state_file(const std::string& path, SavedState& out, std::string& error) {
@@ -50,7 +84,8 @@ bool read_state_file(const std::string& path, SavedState& out, std::string& erro
       !optional_numbers(j, "gnss_velocity_sigma_m_s", 1, &w.gnss_velocity_sigma_m_s, path, error) ||
       !optional_numbers(j, "mag_sigma_uT", 1, &w.mag_sigma_uT, path, error) ||
       !optional_numbers(j, "gnss_white_scale", 2, w.gnss_white_scale.data(), path, error) ||
-      !optional_numbers(j, "gnss_position_scale", 2, w.gnss_position_scale.data(), path, error))
+      !optional_numbers(j, "gnss_position_scale", 2, w.gnss_position_scale.data(), path, error) ||
+      !read_vehicle(j, path, w, error))
     return false;
   w.given = true;
   return true;
@@ -76,6 +111,11 @@ bool write_state_file(const std::string& path, const SavedState& s, std::string&
   j["mag_sigma_uT"] = w.mag_sigma_uT;
   j["gnss_white_scale"] = vec(w.gnss_white_scale);
   j["gnss_position_scale"] = vec(w.gnss_position_scale);
+  if (w.vehicle == est::VehicleGuess::Ground)
+    j["vehicle"] = {{"guess", "ground"},
+                    {"on_bracket", w.on_bracket},
+                    {"lateral_b", vec(w.vehicle_axes.lateral_b)},
+                    {"vertical_b", vec(w.vehicle_axes.vertical_b)}};
   return write_json_file(path, j, error);
 }
 

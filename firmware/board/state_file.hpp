@@ -6,7 +6,10 @@
 //   {"effects": {...}, "saved_utc_ms": 1700000000000,
 //    "temp_ref_degC": 31.2, "gps_bias_level_ned_m": [n, e, d],
 //    "gnss_velocity_sigma_m_s": 0.1, "mag_sigma_uT": 0.8,
-//    "gnss_white_scale": [h, v], "gnss_position_scale": [h, v], "source": "..."}
+//    "gnss_white_scale": [h, v], "gnss_position_scale": [h, v],
+//    "vehicle": {"guess": "ground", "on_bracket": false, "lateral_b": [0, 1, 0], "vertical_b": [0, 0, 1]},
+//    "source": "..."}
+// ("vehicle" only while the detector holds the unit on a ground vehicle.)
 // saved_utc_ms (GNSS time of the solution, ms since 1970) dates it: a restart
 // uses it only while it is younger than a bound (NavUnitConfig::state_max_age_s).
 #include <cstdint>

@@ -83,11 +83,15 @@ void print_summary(const replay::ReplayOptions& opt, const replay::ReplayResult&
     if (v.on_bracket)
       std::snprintf(mount, sizeof mount, "; the unit sits turned %.1f deg, pitched %.1f deg, rolled %.1f deg on it",
                     v.unit_yaw_deg, v.unit_pitch_deg, v.unit_roll_deg);
-    std::printf("  vehicle: moves like a ground vehicle from t=%.1f s (velocity while moving, across the vehicle %.2f, "
-                "along its vertical %.2f m/s RMS%s): non-holonomic constraint %s\n",
-                v.detected_at_s, v.lateral_rms_m_s, v.vertical_rms_m_s, mount,
-                v.guess == est::VehicleGuess::Ground ? "on (--vehicle air keeps it off)"
-                                                     : "on, then off again: the constraint did not hold");
+    const char* constraint = v.guess == est::VehicleGuess::Ground ? "on (--vehicle air keeps it off)"
+                                                                   : "on, then off again: the constraint did not hold";
+    if (v.restored)
+      std::printf("  vehicle: a ground vehicle, as the state file says (found before the restart%s): non-holonomic "
+                  "constraint %s\n", mount, constraint);
+    else
+      std::printf("  vehicle: moves like a ground vehicle from t=%.1f s (velocity while moving, across the vehicle %.2f, "
+                  "along its vertical %.2f m/s RMS%s): non-holonomic constraint %s\n",
+                  v.detected_at_s, v.lateral_rms_m_s, v.vertical_rms_m_s, mount, constraint);
   }
   std::printf("  rmse: pos_h %s m  pos_v %s m  vel %s m/s  att %s deg  (%s truth points; GNSS alone: pos_h %s m  pos_v %s m)\n",
               num(r.rmse_pos_h_m()).c_str(), num(r.rmse_pos_v_m()).c_str(), num(r.rmse_vel_m_s()).c_str(),

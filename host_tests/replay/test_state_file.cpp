@@ -74,6 +74,8 @@ TEST_F(StateFile, HoldsWhatTheUnitLearntDatedByGnssTime) {
     for (const auto& s : j["effects"][name]["sigma"]) EXPECT_GT(s.get<double>(), 0.0);
   }
   EXPECT_FALSE(j["effects"].contains("mag_earth_field")) << "the field restarts from a sample";
+  // An aircraft: no ground vehicle to restore (the real car's: test_air_start.cpp).
+  EXPECT_FALSE(j.contains("vehicle")) << j["vehicle"].dump();
   // Saved at the end of the head: its last fix's UTC (the simulator's GPRMC
   // dates), within a fix period of 200 s after the first.
   const nlohmann::json head = read_json(dir_->file("head_out") + "/summary.json");
@@ -170,6 +172,17 @@ TEST_F(StateFile, ACorruptStateIsNamedAndNotUsed) {
                 "bad_sigma");
   EXPECT_NE(err.find("effects.gyro_bias.sigma: expected 3 positive numbers"), std::string::npos) << err;
   EXPECT_TRUE(same_as_cold("bad_sigma"));
+
+  err = restart(edited("boat.json", [](nlohmann::json& j) { j["vehicle"] = {{"guess", "boat"}}; }), "boat");
+  EXPECT_NE(err.find("vehicle.guess: \"boat\": expected \"ground\""), std::string::npos) << err;
+  EXPECT_TRUE(same_as_cold("boat"));
+
+  err = restart(edited("skew.json", [](nlohmann::json& j) {
+    j["vehicle"] = {{"guess", "ground"}, {"lateral_b", {0.0, 1.0, 0.0}}, {"vertical_b", {0.0, 0.6, 0.8}}};
+  }), "skew");
+  EXPECT_NE(err.find("vehicle: lateral_b and vertical_b: expected two unit vectors at right angles"), std::string::npos)
+      << err;
+  EXPECT_TRUE(same_as_cold("skew"));
 
   err = restart(edited("undated.json", [](nlohmann::json& j) { j.erase("saved_utc_ms"); }), "undated");
   EXPECT_NE(err.find("saved_utc_ms: expected an integer"), std::string::npos) << err;

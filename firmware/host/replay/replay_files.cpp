@@ -84,7 +84,9 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
   sj["vehicle"] = {{"configured", board::vehicle_word(v.configured)},
                    {"constraints_at_end", v.ground_at_end ? "ground" : "none"},
                    {"detected", detected},
-                   {"detected_at_s", v.guess != est::VehicleGuess::Undecided ? json(v.detected_at_s) : json(nullptr)},
+                   {"detected_at_s", v.guess != est::VehicleGuess::Undecided && !v.restored ? json(v.detected_at_s)
+                                                                                            : json(nullptr)},
+                   {"from_state_file", v.restored},
                    {"evidence", {{"moving_s", v.moving_s}, {"lateral_rms_m_s", v.lateral_rms_m_s},
                                  {"vertical_rms_m_s", v.vertical_rms_m_s}}},
                    {"unit_on_vehicle", {{"found", v.on_bracket},
