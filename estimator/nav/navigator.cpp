@@ -176,7 +176,10 @@ void Navigator::process(const ImuSample& s) {
   if (!aligned()) {
     align(s, dt);
     prev_ = s;
-    if (aligned()) emit();
+    if (aligned()) {
+      update_health(s.t_s, 0.0);  // the aligned row's state bits (constraints, clipping) are this sample's
+      emit();
+    }
     return;
   }
 
