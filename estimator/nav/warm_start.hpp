@@ -5,10 +5,10 @@
 // receiver's latency and correlated error, the hard iron, ...), the
 // temperature they refer to and the noise levels learnt from the
 // innovations, and what vehicle carries the unit. The attitude, velocity
-// and position are not in it: a
-// restarted unit aligns again, in motion, and takes these as its priors,
-// aged; what a power cycle or a battery swap changes only where the data
-// say it has not changed (checked_by_the_field, checked_by_the_rest below).
+// and position are not in it: a restarted unit aligns again, in motion, and
+// takes these as its priors, aged; what a power cycle or a battery swap
+// changes only where the data say it has not changed (checked_by_the_field,
+// checked_by_the_rest below).
 // The board keeps it in a state file (firmware/board/state_file.hpp).
 #include <array>
 #include <Eigen/Core>
