@@ -31,7 +31,7 @@ struct WarmStart {
   // What the vehicle detector found (vehicle = auto): the vehicle that
   // carries the unit outlives a reboot. A restart in motion takes it at once
   // (the non-holonomic constraint from the alignment, still reverted if it
-  // fails) instead of after half a minute of driving and a turn. Only
+  // fails) instead of after 20 s of driving and a turn. Only
   // Ground is taken back; the axes have the vehicle_mount estimate turned in.
   VehicleGuess vehicle = VehicleGuess::Undecided;
   bool on_bracket = false;

@@ -137,7 +137,7 @@ TEST(AirStart, TheRealDriveStartedWhileDrivingAlignsAndDeadReckonsItsOutages) {
 // The same restart of the real car with the state file a running unit keeps
 // (the drive replayed up to 20 s before the cut): the state file says a
 // ground vehicle carries the unit, so the non-holonomic constraint holds
-// from the alignment instead of after 30 s of driving and a turn (the
+// from the alignment instead of after 20 s of driving and a turn (the
 // detector's evidence, vehicle_detector.hpp). Without it, on this car, the
 // outages drift 4x as far (10.5 against 2.6 m RMS, --vehicle air).
 // Scored on every outage that starts after the cut, the first 31 s after it.
@@ -159,7 +159,7 @@ TEST(AirStart, TheRealDriveRestartedWithItsStateFileKeepsItsVehicle) {
   EXPECT_EQ(s["health"]["status"], "ok") << s["health"].dump();
   EXPECT_TRUE(s["vehicle"]["from_state_file"].get<bool>()) << s["vehicle"].dump();
   EXPECT_EQ(s["vehicle"]["constraints_at_end"], "ground") << s["vehicle"].dump();
-  // The constraint in use from the aligned row on (the cold restart: 49 s later).
+  // The constraint in use from the aligned row on (the cold restart: 20 s later).
   const ErrorSeries w = error_series(dir.file("w") + "/nav.csv", drive + "/truth.csv");
   std::size_t first_aligned = 0;
   while (first_aligned < w.flags.size() && !(w.flags[first_aligned] & est::nav_flag::kAligned)) ++first_aligned;
@@ -170,8 +170,8 @@ TEST(AirStart, TheRealDriveRestartedWithItsStateFileKeepsItsVehicle) {
   const double drift_full = outage_drift_rms_after(full, t_first, scored_full);
   EXPECT_EQ(scored_warm, 8);
   EXPECT_EQ(scored_full, 8);
-  // The 20 %: measured 2.70 against 2.59 m (the first outage, 31 s
-  // after the cut, 0.91 against 0.84; before the vehicle was in the state
+  // The 20 %: measured 2.71 against 2.60 m (the first outage, 31 s
+  // after the cut, 0.92 against 0.85; before the vehicle was in the state
   // file, 1.92, its constraint 49 s after the alignment).
   EXPECT_LT(drift_warm, 1.2 * drift_full) << drift_warm << " against " << drift_full;
 }
