@@ -99,7 +99,7 @@ WarmStart Navigator::warm_state() const {
   w.gnss_white_scale = gnss_white_scale();
   w.gnss_position_scale = gnss_position_scale();
   if (cfg_.vehicle == VehicleKind::Auto) {
-    w.vehicle = vehicle_.guess();
+    w.ground_vehicle = vehicle_.guess() == VehicleGuess::Ground;
     w.on_bracket = vehicle_.on_bracket();
     w.vehicle_axes = vehicle_axes_in_use(filter_, vehicle_.axes());
   }
@@ -131,7 +131,7 @@ bool Navigator::warm_start(const WarmStart& saved, double age_s) {
     filter_.set_prior(effect, w);
   }
   offer_saved_iron();
-  if (cfg_.vehicle == VehicleKind::Auto) vehicle_.restore(warm_.vehicle, warm_.vehicle_axes, warm_.on_bracket);
+  if (cfg_.vehicle == VehicleKind::Auto && warm_.ground_vehicle) vehicle_.restore(warm_.vehicle_axes, warm_.on_bracket);
   // Learnt noise levels, where this unit learns them (a sigma the user gave stays).
   if (cfg_.gnss_velocity_noise.enabled && warm_.gnss_velocity_sigma_m_s > 0.0) {
     vel_noise_.configure(cfg_.gnss_velocity_noise, warm_.gnss_velocity_sigma_m_s);

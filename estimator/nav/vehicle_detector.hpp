@@ -82,12 +82,11 @@ class VehicleDetector {
     window_start_s_ = 0.0;
     restored_ = false;
   }
-  /// A restart's: a ground vehicle and its axes found before it (the state file; Undecided or Reverted there:
-  /// decided again here). The same vehicle carries the unit; a constraint that then fails still reverts it.
-  void restore(VehicleGuess guess, const VehicleAxes& axes, bool on_bracket) {
+  /// A restart's: the ground vehicle and its axes found before it (the state file). The same vehicle carries
+  /// the unit; a constraint that then fails still reverts it.
+  void restore(const VehicleAxes& axes, bool on_bracket) {
     restart();
-    if (guess != VehicleGuess::Ground) return;
-    guess_ = guess;
+    guess_ = VehicleGuess::Ground;
     axes_ = axes;
     on_bracket_ = on_bracket;
     restored_ = true;

@@ -15,7 +15,6 @@
 
 #include "estimator/ekf/effect_tuning.hpp"
 #include "estimator/ekf/vehicle_axes.hpp"
-#include "estimator/nav/vehicle_detector.hpp"
 
 namespace sinu::est {
 
@@ -31,9 +30,9 @@ struct WarmStart {
   // What the vehicle detector found (vehicle = auto): the vehicle that
   // carries the unit outlives a reboot. A restart in motion takes it at once
   // (the non-holonomic constraint from the alignment, still reverted if it
-  // fails) instead of after 20 s of driving and a turn. Only
-  // Ground is taken back; the axes have the vehicle_mount estimate turned in.
-  VehicleGuess vehicle = VehicleGuess::Undecided;
+  // fails) instead of after 20 s of driving and a turn. The axes have the
+  // vehicle_mount estimate turned in.
+  bool ground_vehicle = false;
   bool on_bracket = false;
   VehicleAxes vehicle_axes;
 };

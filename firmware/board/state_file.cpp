@@ -58,7 +58,7 @@ bool read_vehicle(const nlohmann::json& j, const std::string& path, est::WarmSta
     error = where + ".on_bracket: expected true or false";
     return false;
   }
-  w.vehicle = est::VehicleGuess::Ground;
+  w.ground_vehicle = true;
   w.on_bracket = v.value("on_bracket", false);
   w.vehicle_axes = axes;
   return true;
@@ -111,7 +111,7 @@ bool write_state_file(const std::string& path, const SavedState& s, std::string&
   j["mag_sigma_uT"] = w.mag_sigma_uT;
   j["gnss_white_scale"] = vec(w.gnss_white_scale);
   j["gnss_position_scale"] = vec(w.gnss_position_scale);
-  if (w.vehicle == est::VehicleGuess::Ground)
+  if (w.ground_vehicle)
     j["vehicle"] = {{"guess", "ground"},
                     {"on_bracket", w.on_bracket},
                     {"lateral_b", vec(w.vehicle_axes.lateral_b)},
