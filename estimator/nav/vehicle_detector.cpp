@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <Eigen/Eigenvalues>
@@ -44,7 +45,8 @@ void VehicleDetector::add(const NavState& nav, double dt_s, bool aided) {
   accel2_ = keep * accel2_ + lateral_accel_g * lateral_accel_g * dt_s;
   if (moving_s_ < cfg_.min_moving_s || turn_rad_ < cfg_.min_turn_rad) return;
   if (rms_along(Eigen::Vector3d::UnitZ()) < cfg_.max_vertical_rms_m_s &&
-      rms_along(Eigen::Vector3d::UnitY()) < cfg_.max_lateral_rms_m_s) {  // the contract's mounting
+      rms_along(Eigen::Vector3d::UnitY()) < cfg_.max_lateral_rms_m_s &&
+      leans_out_of_turns(Eigen::Vector3d::UnitY())) {  // the contract's mounting
     guess_ = VehicleGuess::Ground;
     decided_at_s_ = nav.t_s;
     return;
@@ -79,15 +81,9 @@ bool VehicleDetector::found_on_bracket(VehicleAxes& axes) const {
   // and 5.9 m). A constant heading error turns the axis and adds nothing
   // across (the vehicle_mount state takes it). The vertical limit and the
   // bank tell an aircraft.
-  if (rms_along(lateral) >= cfg_.mounted_lateral_rms_m_s || rms_along(vertical) >= cfg_.max_vertical_rms_m_s)
+  if (rms_along(lateral) >= cfg_.mounted_lateral_rms_m_s || rms_along(vertical) >= cfg_.max_vertical_rms_m_s ||
+      !leans_out_of_turns(lateral))
     return false;
-  const double mean_accel = accel_ / weight_s_;
-  const double accel_var = accel2_ / weight_s_ - mean_accel * mean_accel;
-  if (!(accel_var >= cfg_.min_lateral_accel_spread_g * cfg_.min_lateral_accel_spread_g)) return false;
-  // The bank (down along the lateral axis: sin of the roll) regressed on the lateral acceleration.
-  const double bank_per_g =
-      (lateral.dot(down_accel_) / weight_s_ - lateral.dot(down_) / weight_s_ * mean_accel) / accel_var;
-  if (!(bank_per_g < cfg_.max_bank_per_g)) return false;
   // Level on the vehicle, as a bracket mostly is: the tilt found is the
   // solution's tilt error of the moment (about 1 deg on the real drive) as
   // much as the bracket's. A pitch or roll within `square_tilt_rad` of a
@@ -116,6 +112,19 @@ void VehicleDetector::on_constraint(double t_s, bool accepted) {
   if (2 * nhc_rejected_ > nhc_tried_) guess_ = VehicleGuess::Reverted;  // the constraint does not hold
   nhc_tried_ = nhc_rejected_ = 0;
   window_start_s_ = t_s;
+}
+
+double VehicleDetector::bank_per_g_along(const Eigen::Vector3d& lateral) const {
+  const double mean_accel = weight_s_ > 0.0 ? accel_ / weight_s_ : 0.0;
+  const double accel_var = weight_s_ > 0.0 ? accel2_ / weight_s_ - mean_accel * mean_accel : 0.0;
+  if (!(accel_var >= cfg_.min_lateral_accel_spread_g * cfg_.min_lateral_accel_spread_g))
+    return std::numeric_limits<double>::quiet_NaN();
+  // The bank (down along the lateral axis: sin of the roll) regressed on the lateral acceleration.
+  return (lateral.dot(down_accel_) / weight_s_ - lateral.dot(down_) / weight_s_ * mean_accel) / accel_var;
+}
+
+bool VehicleDetector::leans_out_of_turns(const Eigen::Vector3d& lateral) const {
+  return bank_per_g_along(lateral) < cfg_.max_bank_per_g;  // false while NaN: no evidence
 }
 
 double VehicleDetector::rms_along(const Eigen::Vector3d& a) const {

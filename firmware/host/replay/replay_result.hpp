@@ -56,6 +56,7 @@ struct VehicleOutcome {
   double detected_at_s = 0.0;       // valid when guess != Undecided and not restored
   bool restored = false;            // the guess came from the state file (a restart), not from this run
   double lateral_rms_m_s = 0.0, vertical_rms_m_s = 0.0, moving_s = 0.0;  // the detector's evidence
+  double bank_per_g = 0.0;          // ... NaN while the turns varied too little to tell
   bool on_bracket = false;          // the detector found the unit turned or tilted on the vehicle:
   double unit_roll_deg = 0.0, unit_pitch_deg = 0.0, unit_yaw_deg = 0.0;  // its attitude on it (VehicleAxes)
 };

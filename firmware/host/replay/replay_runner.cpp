@@ -217,7 +217,7 @@ void collect(const board::NavUnit& unit, ReplayResult& r) {
   const est::VehicleDetector& vd = nav.vehicle_detector();
   const Eigen::Vector3d mount_deg = est::vehicle_axes_in_use(f, vd.axes()).unit_euler_rad() * (180.0 / std::numbers::pi);
   r.vehicle = {nav.config().vehicle, nav.ground_vehicle(), vd.guess(), vd.decided_at_s(), vd.restored(), vd.lateral_rms_m_s(),
-               vd.vertical_rms_m_s(), vd.moving_s(), vd.on_bracket(), mount_deg.x(), mount_deg.y(), mount_deg.z()};
+               vd.vertical_rms_m_s(), vd.moving_s(), vd.bank_per_g(), vd.on_bracket(), mount_deg.x(), mount_deg.y(), mount_deg.z()};
   r.gnss_velocity_sigma_m_s = nav.gnss_velocity_sigma_m_s();
   r.mag_sigma_uT = nav.mag_sigma_uT();
   r.gnss_position_scale = nav.gnss_position_scale();
