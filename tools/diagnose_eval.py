@@ -16,6 +16,8 @@ truth.csv, then scores:
   - where it matters: top-1 again over the flights whose true model lowers the
     outage drift by MATTERS (5 %) or more (the issue asks for effects "at
     magnitudes that matter"; a carried effect always counts);
+  - --airframe multirotor: the same on a slow multirotor's flights (sinu
+    simulate flight --airframe; docs/simulation.md);
   - --sweep EFFECT:S1,S2,..: the first --sweep-flights one-effect flights of
     EFFECT again with its hidden value times each scale (where it starts to
     matter, and whether it is named then).
@@ -44,6 +46,7 @@ EFFECTS = ["accel_scale", "gyro_scale", "accel_misalign", "gyro_misalign", "leve
 # carried_findings); that counts as naming them. They always "matter".
 CARRIED = {"mag_hard_iron", "gps_latency"}
 DURATION_S = 1200
+AIRFRAME = "fixed-wing"  # --airframe
 # Eight 30-s outages spread over the flight (after the first 3 minutes), from its start.
 OUTAGE_STARTS = list(range(180, DURATION_S - 60, (DURATION_S - 240) // 8))[:8]
 # An effect matters in a flight when the filter given its states drifts this much less.
@@ -63,7 +66,8 @@ def simulate(sinu, work, seed, k):
     d = os.path.join(work, f"s{seed}_k{k}")
     hidden = d + "_hidden.json"
     shutil.rmtree(d, ignore_errors=True)
-    run([sinu, "simulate", "flight", "--seed", str(seed), "--duration", str(DURATION_S), "--effects-random", str(k),
+    run([sinu, "simulate", "flight", "--seed", str(seed), "--duration", str(DURATION_S), "--airframe", AIRFRAME,
+         "--effects-random", str(k),
          "--hidden-out", hidden, "--out", d])
     h = json.load(open(hidden))
     return d, sorted(h.get("effects", {}).keys()), h["t0_s"]
@@ -103,7 +107,8 @@ def simulate_scaled(sinu, work, seed, scale):
     spec = d + "_effects.json"
     json.dump(effects, open(spec, "w"))
     shutil.rmtree(d, ignore_errors=True)
-    run([sinu, "simulate", "flight", "--seed", str(seed), "--duration", str(DURATION_S), "--effects", spec,
+    run([sinu, "simulate", "flight", "--seed", str(seed), "--duration", str(DURATION_S), "--airframe", AIRFRAME,
+         "--effects", spec,
          "--hidden-out", d + "_hidden.json", "--out", d])
     h = json.load(open(d + "_hidden.json"))
     return d, sorted(h.get("effects", {}).keys()), h["t0_s"]
@@ -180,6 +185,7 @@ def correct(row):
 
 
 def main():
+    global AIRFRAME
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--sinu", default="build/release/firmware/sinu")
     ap.add_argument("--work", default="/tmp/diagnose_eval")
@@ -188,10 +194,12 @@ def main():
     ap.add_argument("--pairs", type=int, default=20)
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--first-seed", type=int, default=1000)
+    ap.add_argument("--airframe", default=AIRFRAME, choices=["fixed-wing", "multirotor"])
     ap.add_argument("--sweep", default="", help="EFFECT:S1,S2,... (e.g. gyro_g_sensitivity:1,2,3)")
     ap.add_argument("--sweep-flights", type=int, default=5)
     ap.add_argument("--out", default="-")
     a = ap.parse_args()
+    AIRFRAME = a.airframe
     os.makedirs(a.work, exist_ok=True)
 
     # Pick flights: seeds in order, kept while their drawn effect still needs flights.
@@ -234,7 +242,8 @@ def main():
 
 def report(rows, first_seed):
     """The markdown tables of the evaluated rows."""
-    out = [f"Flights of {DURATION_S // 60} min (`sinu simulate flight --effects-random K`, seeds {first_seed}..), "
+    airframe = "" if AIRFRAME == "fixed-wing" else f" --airframe {AIRFRAME}"
+    out = [f"Flights of {DURATION_S // 60} min (`sinu simulate flight{airframe} --effects-random K`, seeds {first_seed}..), "
            "each with a 1-h bench session of the same unit for `sinu calibrate`; `sinu diagnose --calib --apply` "
            f"without truth.csv; outage drift: RMS of the largest horizontal drift in eight 30-s outages (at "
            f"{', '.join(str(t) for t in OUTAGE_STARTS)} s into the flight).", "",

@@ -1,6 +1,7 @@
 // sinu simulate flight|static --out DIR --seed N [--duration S | --hours H]
 //   [--imu-rate HZ] [--gps-rate HZ] [--effects FILE | --effects-random K]
 //   [--unit-accel-errors] [--hidden-out FILE] [--corrupt-fraction F] [--site LAT,LON,H]
+//   flight: [--airframe fixed-wing|multirotor]
 //   static: [--positions N [--hold-s S] [--transition-s S]]
 // Writes a dataset folder (dataset-format.md) and, optionally, the hidden
 // truth (error-model parameters and effects) as JSON outside that folder.
@@ -108,6 +109,12 @@ void add_mode(CLI::App& parent, Action& action, sim::SimMode mode) {
                     "Fraction of NMEA sentences deliberately corrupted")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 1.0));
+    sub->add_option_function<std::string>(
+           "--airframe", [c](const std::string& name) { sim::airframe_from_name(name, c->sim.airframe); },
+           "What flies it: fixed-wing (the paper's UAV, 33-47 m/s) or multirotor (a survey at 3-8 m/s, vertical "
+           "take-off and landing, hover stops)")
+        ->default_str(sim::airframe_name(sim::Airframe::FixedWing))
+        ->check(CLI::IsMember({sim::kAirframeNames[0], sim::kAirframeNames[1]}));
   }
   auto* fx = sub->add_option("--effects", c->effects_file, "Effects JSON file (docs/simulation.md)");
   const int n_effects = static_cast<int>(sim::kEffectNames.size());

@@ -108,6 +108,18 @@ TEST(SimulateCli, SiteOptionPlacesTheFlight) {
   }
 }
 
+TEST(SimulateCli, TheAirframeIsSaidInMetaAndHidden) {
+  TempDir tmp;
+  const auto r = run_sinu({"simulate", "flight", "--out", tmp.file("d"), "--seed", "2", "--duration", "300",
+                           "--airframe", "multirotor", "--hidden-out", tmp.file("h.json")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(read_file(tmp.file("h.json")))["airframe"], "multirotor");
+  EXPECT_NE(read_file(tmp.file("d/meta.json")).find("--airframe multirotor"), std::string::npos);
+  // The same seed as a fixed wing (the default) flies elsewhere.
+  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", tmp.file("e"), "--seed", "2", "--duration", "300"}).exit_code, 0);
+  EXPECT_NE(read_file(tmp.file("d/truth.csv")), read_file(tmp.file("e/truth.csv")));
+}
+
 TEST(SimulateCli, UsageErrorsExitTwo) {
   TempDir tmp;
   const std::string out = tmp.file("o");
@@ -122,6 +134,9 @@ TEST(SimulateCli, UsageErrorsExitTwo) {
   EXPECT_EQ(run_sinu({"simulate", "flight", "--out", out, "--seed", "1", "--effects-random", too_many}).exit_code, 2);
   EXPECT_EQ(run_sinu({"simulate", "flight", "--out", out, "--seed", "1", "--imu-rate", "0"}).exit_code, 2);
   EXPECT_EQ(run_sinu({"simulate", "flight", "--out", out, "--seed", "1", "--duration", "10"}).exit_code, 2);
+  const auto heli = run_sinu({"simulate", "flight", "--out", out, "--seed", "1", "--airframe", "helicopter"});
+  EXPECT_EQ(heli.exit_code, 2);
+  EXPECT_NE(heli.err.find("--airframe"), std::string::npos) << heli.err;
   EXPECT_EQ(run_sinu({"simulate", "static", "--out", out, "--seed", "1", "--duration", "5", "--hours", "1"}).exit_code,
             2);
   const auto inside = run_sinu({"simulate", "static", "--out", out, "--seed", "1", "--duration", "10",

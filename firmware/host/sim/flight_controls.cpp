@@ -25,7 +25,7 @@ double Ramp::rate(double t) const {
 
 ControlValues FlightControls::at(double t) const {
   return {speed.value(t), speed.rate(t), gamma.value(t), gamma.rate(t),
-          bank.value(t),  bank.rate(t),  alpha.value(t), alpha.rate(t)};
+          bank.value(t),  bank.rate(t),  alpha.value(t), alpha.rate(t), min_turn_speed_m_s};
 }
 
 }  // namespace sinu::sim

@@ -24,10 +24,12 @@ struct ControlValues {
   double gamma_rad = 0.0, gamma_rate_rad_s = 0.0;  // flight-path angle, climb positive
   double bank_rad = 0.0, bank_rate_rad_s = 0.0;     // roll, right wing down positive
   double alpha_rad = 0.0, alpha_rate_rad_s = 0.0;   // pitch above the flight path
+  double min_turn_speed_m_s = 5.0;                  // slower, no turn (airframe.hpp)
 };
 
 struct FlightControls {
   Ramp speed, gamma, bank, alpha;
+  double min_turn_speed_m_s = 5.0;
   ControlValues at(double t_s) const;
 };
 

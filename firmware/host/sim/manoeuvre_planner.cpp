@@ -51,6 +51,7 @@ double ManoeuvrePlanner::final_descent_s(double agl) const {
 }
 
 void ManoeuvrePlanner::plan(const PlannerInput& in) {
+  if (airframe_ == Airframe::Multirotor) return plan_multirotor(in);
   const double left = in.end_s - in.t_s;
   switch (phase_) {
     case Phase::Ground:

@@ -165,7 +165,7 @@ bool run_simulation(const SimOptions& options, SimResult& result, dataset::Diagn
 
   dataset::CsvRow row;
   if (flight) {
-    Trajectory traj(site, t0, t0 + o.duration_s, dt / static_cast<double>(substeps), traj_rng);
+    Trajectory traj(site, t0, t0 + o.duration_s, dt / static_cast<double>(substeps), traj_rng, o.airframe);
     const double fix_period = 1.0 / o.gps_rate_hz;
     UtcClock clock;
     clock.utc_minus_board_s = std::floor(traj_rng.uniform(2.0, 16.0) * 3600.0) - t0;
@@ -262,8 +262,12 @@ bool run_simulation(const SimOptions& options, SimResult& result, dataset::Diagn
   dataset::Meta meta;
   meta.imu_rate_hz = o.imu_rate_hz;
   if (flight) meta.gps_rate_hz = o.gps_rate_hz;
-  meta.object["notes"] = o.positions > 1 ? fmt::format("sinu simulate static --seed {} --positions {}", o.seed, o.positions)
-                                         : fmt::format("sinu simulate {} --seed {}", flight ? "flight" : "static", o.seed);
+  if (o.positions > 1)
+    meta.object["notes"] = fmt::format("sinu simulate static --seed {} --positions {}", o.seed, o.positions);
+  else if (flight && o.airframe != Airframe::FixedWing)
+    meta.object["notes"] = fmt::format("sinu simulate flight --seed {} --airframe {}", o.seed, airframe_name(o.airframe));
+  else
+    meta.object["notes"] = fmt::format("sinu simulate {} --seed {}", flight ? "flight" : "static", o.seed);
   if (!dataset::write_meta(paths.meta(), meta, err)) return false;
 
   nlohmann::json& h = result.hidden;
@@ -272,6 +276,7 @@ bool run_simulation(const SimOptions& options, SimResult& result, dataset::Diagn
   h["seed"] = o.seed;
   h["imu_rate_hz"] = o.imu_rate_hz;
   if (flight) h["gps_rate_hz"] = o.gps_rate_hz;
+  if (flight) h["airframe"] = airframe_name(o.airframe);
   h["t0_s"] = t0;
   h["duration_s"] = o.duration_s;
   h["imu_error_model"] = imu_error_model_json(model);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "firmware/host/dataset/diagnostic.hpp"
+#include "firmware/host/sim/airframe.hpp"
 #include "firmware/host/sim/effects.hpp"
 #include "firmware/host/sim/gps_receiver.hpp"
 #include "firmware/host/sim/imu_error_model.hpp"
@@ -25,6 +26,7 @@ struct SimOptions {
   double imu_rate_hz = 40.0;
   double gps_rate_hz = 5.0;
   Effects effects;
+  Airframe airframe = Airframe::FixedWing;  // flight only: what flies it (airframe.hpp)
   /// Static only: 1 = the level bench; N in 6..26 = N attitudes
   /// (bench_schedule.hpp), each held `hold_s` (0: the duration split evenly),
   /// with `transition_s` of turning between them.

@@ -22,9 +22,10 @@ Site draw_site(Rng& rng) {
   return s;
 }
 
-Trajectory::Trajectory(const Site& site, double t0_s, double end_s, double substep_s, Rng& rng)
-    : site_(site), t0_s_(t0_s), end_s_(end_s), substep_s_(substep_s), planner_(rng) {
+Trajectory::Trajectory(const Site& site, double t0_s, double end_s, double substep_s, Rng& rng, Airframe airframe)
+    : site_(site), t0_s_(t0_s), end_s_(end_s), substep_s_(substep_s), planner_(rng, airframe) {
   state_ = {site.heading_rad, site.lat_rad, site.lon_rad, site.ground_h_m};
+  controls_.min_turn_speed_m_s = min_turn_speed_m_s(airframe);
   controls_.speed.hold(0.0);
   controls_.gamma.hold(0.0);
   controls_.bank.hold(0.0);

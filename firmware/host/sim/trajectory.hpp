@@ -24,7 +24,8 @@ Site draw_site(Rng& rng);
 
 class Trajectory {
  public:
-  Trajectory(const Site& site, double t0_s, double end_s, double substep_s, Rng& rng);
+  Trajectory(const Site& site, double t0_s, double end_s, double substep_s, Rng& rng,
+             Airframe airframe = Airframe::FixedWing);
   /// Motion at the current grid point.
   TrueMotion motion() const;
   /// Motion at t in [time(), time() + substep], without advancing.

@@ -9,11 +9,10 @@ namespace sinu::sim {
 
 namespace {
 constexpr double kTurnGravity_m_s2 = 9.80665;  // defines the coordinated turn only
-constexpr double kMinTurnSpeed_m_s = 5.0;      // below it the aircraft taxis straight
 }  // namespace
 
 double heading_rate_rad_s(const ControlValues& c) {
-  if (c.speed_m_s < kMinTurnSpeed_m_s) return 0.0;
+  if (c.speed_m_s < c.min_turn_speed_m_s) return 0.0;
   return kTurnGravity_m_s2 * std::tan(c.bank_rad) / c.speed_m_s;
 }
 
