@@ -8,11 +8,12 @@
 // body-frame velocity while moving and GNSS-aided, and declares a ground
 // vehicle once, after at least `min_moving_s` of motion, the last
 // `memory_s` of it (turns of `min_turn_rad` among them) show both components
-// below their limits and no bank into the turns (below); until then it is treated as an aircraft (no
-// constraint: the safe side). Then the navigator adds the non-holonomic
-// constraint and zero-velocity updates at stops; if the constraint is then
-// rejected more often than not over `revert_window_s` (the guess was wrong:
-// an aircraft's take-off run, then flight), it goes back to air for good.
+// below their limits and no bank into the turns (below); until then it is
+// treated as an aircraft (no constraint: the safe side). Then the navigator
+// adds the non-holonomic constraint and zero-velocity updates at stops; if
+// the constraint is then rejected more often than not over
+// `revert_window_s` (the guess was wrong: an aircraft's take-off run, then
+// flight), it goes back to air for good.
 //
 // The velocity alone does not tell every aircraft: a multirotor surveying
 // at 4 m/s nose first, pitched 3 deg, has 0.2 m/s along body z and nothing

@@ -245,12 +245,13 @@ TYPED_TEST(FlightPhysics, PositionFollowsVelocityOnTheEllipsoid) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   int n = 0;
   const auto& tr = *TestFixture::truth_;
+  constexpr double dt = TestFixture::kDt;
   for (std::size_t k = 2; k + 2 < tr.size(); ++k) {
     const double lat = tr[k].value[tc::lat] * kDeg, h = tr[k].value[tc::h];
-    const Eigen::Vector3d from_position(derivative(tr, k, tc::lat, TestFixture::kDt) * kDeg * (ref::r_meridian(lat) + h),
-                                        derivative(tr, k, tc::lon, TestFixture::kDt) * kDeg * (ref::r_transverse(lat) + h) *
+    const Eigen::Vector3d from_position(derivative(tr, k, tc::lat, dt) * kDeg * (ref::r_meridian(lat) + h),
+                                        derivative(tr, k, tc::lon, dt) * kDeg * (ref::r_transverse(lat) + h) *
                                             std::cos(lat),
-                                        -derivative(tr, k, tc::h, TestFixture::kDt));
+                                        -derivative(tr, k, tc::h, dt));
     sum += from_position - velocity(tr[k]);
     if (++n == 40) {
       worst = std::max(worst, (sum / n).cwiseAbs().maxCoeff());

@@ -265,7 +265,8 @@ bool run_simulation(const SimOptions& options, SimResult& result, dataset::Diagn
   if (o.positions > 1)
     meta.object["notes"] = fmt::format("sinu simulate static --seed {} --positions {}", o.seed, o.positions);
   else if (flight && o.airframe != Airframe::FixedWing)
-    meta.object["notes"] = fmt::format("sinu simulate flight --seed {} --airframe {}", o.seed, airframe_name(o.airframe));
+    meta.object["notes"] =
+        fmt::format("sinu simulate flight --seed {} --airframe {}", o.seed, airframe_name(o.airframe));
   else
     meta.object["notes"] = fmt::format("sinu simulate {} --seed {}", flight ? "flight" : "static", o.seed);
   if (!dataset::write_meta(paths.meta(), meta, err)) return false;
