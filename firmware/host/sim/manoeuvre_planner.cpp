@@ -28,13 +28,12 @@ void ManoeuvrePlanner::push(const Primitive& p) {
   speed_m_s_ = p.speed_m_s;
 }
 
-void ManoeuvrePlanner::plan_turn(double bank, double turn) {
+void ManoeuvrePlanner::plan_turn(double bank, double turn, double ramp, double alpha) {
   // Heading turned while banked: rate * (hold + ramp) (half of each ramp counts).
   const double rate = kG * std::tan(std::abs(bank)) / speed_m_s_;
-  const double ramp = 3.0;
   const double hold = std::max(0.0, turn / rate - ramp);
-  push({ramp, hold, speed_m_s_, 0.0, bank, kCruiseAlpha_rad, "turn"});
-  push({ramp, 2.0, speed_m_s_, 0.0, 0.0, kCruiseAlpha_rad, "roll out"});
+  push({ramp, hold, speed_m_s_, 0.0, bank, alpha, "turn"});
+  push({ramp, 2.0, speed_m_s_, 0.0, 0.0, alpha, "roll out"});
 }
 
 void ManoeuvrePlanner::plan_height_change(double dh) {
@@ -94,9 +93,9 @@ void ManoeuvrePlanner::plan(const PlannerInput& in) {
   if (u < 0.22) {
     push({2.0, rng_.uniform(20.0, 90.0), speed_m_s_, 0.0, 0.0, kCruiseAlpha_rad, "straight"});
   } else if (u < 0.47) {
-    plan_turn(rng_.signed_uniform(15.0, 35.0) * kDeg, rng_.uniform(45.0, 180.0) * kDeg);
+    plan_turn(rng_.signed_uniform(15.0, 35.0) * kDeg, rng_.uniform(45.0, 180.0) * kDeg, 3.0, kCruiseAlpha_rad);
   } else if (u < 0.57) {
-    plan_turn(rng_.signed_uniform(20.0, 30.0) * kDeg, 2.0 * std::numbers::pi);  // loiter circle
+    plan_turn(rng_.signed_uniform(20.0, 30.0) * kDeg, 2.0 * std::numbers::pi, 3.0, kCruiseAlpha_rad);  // loiter
   } else if (u < 0.67) {
     const double bank = rng_.signed_uniform(20.0, 30.0) * kDeg;  // figure-eight: circle one way, then the other
     const double rate = kG * std::tan(std::abs(bank)) / speed_m_s_;

@@ -42,7 +42,8 @@ class ManoeuvrePlanner {
   void plan(const PlannerInput& in);
   void plan_multirotor(const PlannerInput& in);
   void push(const Primitive& p);
-  void plan_turn(double bank_rad, double turn_rad);
+  /// A coordinated turn through turn_rad at the current speed, then the roll-out; alpha held.
+  void plan_turn(double bank_rad, double turn_rad, double ramp_s, double alpha_rad);
   /// A multirotor's primitive: the body level but for its tilt into the horizontal speed, whatever the flight path.
   Primitive multirotor(double ramp_s, double hold_s, double speed_m_s, double gamma_rad, double bank_rad,
                        const char* name) const;

@@ -9,7 +9,6 @@ namespace sinu::sim {
 
 namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kG = 9.80665;
 constexpr double kVertical_rad = std::numbers::pi / 2.0;  // the flight path of a vertical climb
 constexpr double kGroundStill_s = 60.0;
 constexpr double kClimbRate_m_s = 2.0, kDescentRate_m_s = 1.5;
@@ -74,10 +73,8 @@ void ManoeuvrePlanner::plan_multirotor(const PlannerInput& in) {
     push(multirotor(2.0, rng_.uniform(20.0, 90.0), speed_m_s_, 0.0, 0.0, "leg"));
   } else if (u < 0.62) {
     const double bank = rng_.signed_uniform(5.0, 15.0) * kDeg;
-    const double rate = kG * std::tan(std::abs(bank)) / speed_m_s_;
-    const double hold = std::max(0.0, rng_.uniform(60.0, 180.0) * kDeg / rate - kTurnRamp_s);
-    push(multirotor(kTurnRamp_s, hold, speed_m_s_, 0.0, bank, "turn"));
-    push(multirotor(kTurnRamp_s, 2.0, speed_m_s_, 0.0, 0.0, "roll out"));
+    const double turn = rng_.uniform(60.0, 180.0) * kDeg;
+    plan_turn(bank, turn, kTurnRamp_s, multirotor(0.0, 0.0, speed_m_s_, 0.0, 0.0, "").alpha_rad);
   } else if (u < 0.72) {
     push(multirotor(3.0, rng_.uniform(5.0, 20.0), 0.0, 0.0, 0.0, "hover"));
   } else if (u < 0.86) {
