@@ -283,6 +283,7 @@ void Navigator::align(const ImuSample& s, double dt) {
   while (!gnss_.empty() && gnss_.front().arrival_s - latency <= s.t_s) {
     const GnssObservation z = gnss_.front();
     gnss_.pop();
+    if (z.has_velocity) scale_check_.add_gnss_velocity(z.arrival_s - latency, z.v_ne_m_s);
     if (!scale_check_.gyro_plausible(s.t_s, z.has_velocity ? z.v_ne_m_s.norm() : NAN)) continue;
     if (!z.has_height) continue;  // the INS starts from a 3-D fix
     if (!alignment_.add_gnss(z, s.t_s, res)) continue;

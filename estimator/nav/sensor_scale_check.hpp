@@ -7,10 +7,17 @@
 // here without any calibration: gravity, the World Magnetic Model's field
 // strength at the first fix, and a GNSS that says the unit stands still.
 //   Accelerometer: the mean |specific force| of every sample before the
-//     alignment against normal gravity. Vehicles average ~1 g (a level turn at
-//     45 deg of bank 1.41 g, vibration adds a little); a wrong unit is 0.1x
-//     (g), 3.3x (ft/s^2), 100x (milli-g). Outside [accel_min, accel_max] the
-//     alignment is refused: no solution is better than one built on it.
+//     alignment against what gravity and the GNSS's motion make it. Level
+//     and steady it is gravity; in a turn the receiver's velocity turns, and
+//     each sample is judged against sqrt(g^2 + a_h^2), a_h the horizontal
+//     acceleration differenced from the GNSS velocity over 0.5-2 s (a level
+//     turn at 60 deg of bank is 2 g: judged against gravity alone, a unit
+//     restarted in it was refused for the rest of the flight). NMEA carries
+//     no vertical velocity, so a pull-up is not in the reference; a loop
+//     averages 1.9 g over its circle, 2.8 g at its bottom. A wrong unit is
+//     0.1x (g), 3.3x (ft/s^2), 10x (cm/s^2), 100x (milli-g). Outside
+//     [accel_min, accel_max] the alignment is refused: no solution is better
+//     than one built on it.
 //   Magnetometer: each field sample before the magnetometer states start,
 //     |m| against the model's strength. A hard iron of tens of uT moves it by
 //     a factor of 2 at most; a wrong unit by 10 (mG), 100 (G), 1000 (nT).
@@ -39,8 +46,8 @@
 namespace sinu::est {
 
 struct SensorScaleCheckConfig {
-  double accel_min_ratio = 0.7;
-  double accel_max_ratio = 1.5;
+  double accel_min_ratio = 0.5;   // g reads 0.1x; a quadcopter dropping 2 m/s^2 0.8x
+  double accel_max_ratio = 2.5;   // ft/s^2 reads 3.3x; the bottom of a 35-m/s, 70-m loop 2.8x
   double mag_max_ratio = 5.0;
   double tau_s = 1.0;                    // the scatter's averaging time (imu_scatter.hpp)
   double still_max_speed_m_s = 0.3;      // the GNSS says still
@@ -51,9 +58,10 @@ struct SensorScaleCheckConfig {
 
 /// The verdicts, for the summary: NaN ratios where nothing was judged.
 struct SensorScaleVerdict {
-  double specific_force_over_gravity = NAN;  // mean |f| before the alignment / normal gravity
+  double specific_force_over_gravity = NAN;  // mean |f| before the alignment / what gravity and the turns make it
   bool accel_refused = false;                // the alignment was refused for it
   double mean_specific_force_m_s2 = NAN, gravity_m_s2 = NAN;
+  double expected_over_gravity = NAN;        // what gravity and the GNSS's horizontal turns made it, / gravity
   double field_over_model = NAN;  // the last refused field sample's |m| / the model's strength
   double model_field_uT = NAN;
   std::uint64_t mag_refused_samples = 0;  // field samples that could not start the magnetometer
@@ -73,8 +81,11 @@ class SensorScaleCheck {
   }
   void restart() {
     verdict_ = {};
-    sum_f_ = 0.0;
+    sum_f_ = sum_load_ = 0.0;
     n_f_ = 0;
+    load_ = 1.0;
+    load_age_s_ = kLoadMaxAge_s;
+    anchor_t_s_ = NAN;
     scatter_.reset();
     gyro_exceeded_since_s_ = NAN;
   }
@@ -82,8 +93,27 @@ class SensorScaleCheck {
   void add_sample(const Eigen::Vector3d& f_m_s2, const Eigen::Vector3d& w_rad_s, double dt_s) {
     if (!f_m_s2.allFinite() || !w_rad_s.allFinite()) return;
     sum_f_ += f_m_s2.norm();
+    load_age_s_ += dt_s;
+    sum_load_ += load_age_s_ < kLoadMaxAge_s ? load_ : 1.0;
     ++n_f_;
     scatter_.add(f_m_s2, w_rad_s, dt_s, cfg_.tau_s);
+  }
+  /// The receiver's horizontal velocity (not one differenced from fixes) at
+  /// its time of validity, before the alignment: the samples after it are
+  /// judged against gravity and the acceleration since the velocity 0.5-2 s
+  /// before (shorter differences are mostly noise; longer, a gap).
+  void add_gnss_velocity(double t_s, const Eigen::Vector2d& v_ne_m_s) {
+    if (!v_ne_m_s.allFinite()) return;
+    const double dt = t_s - anchor_t_s_;
+    if (dt < kMinDifference_s) return;  // also the first (NaN)
+    if (dt <= kMaxDifference_s) {
+      // Capped: a velocity glitch must not excuse a wrong unit.
+      const double a_g = std::min((v_ne_m_s - anchor_v_).norm() / dt / kStandardG, kMaxLoad_g);
+      load_ = std::sqrt(1.0 + a_g * a_g);
+      load_age_s_ = 0.0;
+    }
+    anchor_t_s_ = t_s;
+    anchor_v_ = v_ne_m_s;
   }
   /// A GNSS epoch before the alignment, its speed (NaN: none): the gyro's
   /// scatter is judged when the GNSS and the accelerometer say still; false
@@ -106,7 +136,8 @@ class SensorScaleCheck {
     if (n_f_ == 0) return true;
     verdict_.mean_specific_force_m_s2 = sum_f_ / static_cast<double>(n_f_);
     verdict_.gravity_m_s2 = gravity_m_s2;
-    const double r = verdict_.mean_specific_force_m_s2 / gravity_m_s2;
+    verdict_.expected_over_gravity = sum_load_ / static_cast<double>(n_f_);
+    const double r = verdict_.mean_specific_force_m_s2 / (gravity_m_s2 * verdict_.expected_over_gravity);
     verdict_.specific_force_over_gravity = r;
     verdict_.accel_refused = !(r >= cfg_.accel_min_ratio && r <= cfg_.accel_max_ratio);
     return !verdict_.accel_refused;
@@ -127,9 +158,16 @@ class SensorScaleCheck {
   bool refused() const { return verdict_.accel_refused || verdict_.gyro_refused; }
 
  private:
+  static constexpr double kStandardG = 9.80665;
+  static constexpr double kMinDifference_s = 0.5, kMaxDifference_s = 2.0;
+  static constexpr double kLoadMaxAge_s = 2.0;  // a reference this old is none: gravity alone
+  static constexpr double kMaxLoad_g = 4.0;  // beyond any UAV's sustained turn
   SensorScaleCheckConfig cfg_;
   SensorScaleVerdict verdict_;
-  double sum_f_ = 0.0;
+  double sum_f_ = 0.0, sum_load_ = 0.0;  // |f| and its reference / gravity, summed over the samples
+  double load_ = 1.0, load_age_s_ = kLoadMaxAge_s;
+  double anchor_t_s_ = NAN;  // the velocity the next acceleration is differenced from
+  Eigen::Vector2d anchor_v_ = Eigen::Vector2d::Zero();
   std::uint64_t n_f_ = 0;
   ImuScatter scatter_;
   double gyro_exceeded_since_s_ = NAN;  // the first of the judged epochs in a row above the bound

@@ -130,7 +130,7 @@ std::size_t FlyLoop::health_line(const FlyHealth& h, char* buf, std::size_t size
   const NavSolution& s = solution_;
   const est::SensorScaleVerdict& units = unit_.navigator().scale_verdict();
   if (units.accel_refused) {
-    append(buf, size, n, " | NAV REFUSED: accelerometer reads %.3g g (not m/s^2? driver scale)",
+    append(buf, size, n, " | NAV REFUSED: accelerometer reads %.3gx gravity and the turns (not m/s^2? driver scale)",
            units.specific_force_over_gravity);
   } else if (units.gyro_refused) {
     append(buf, size, n, " | NAV REFUSED: gyro scatters %.3g rad/s at rest (not rad/s? driver scale)",

@@ -43,7 +43,8 @@ void print_end(const board::FlyLoop& loop, const board::OutputDevices& outputs, 
   const est::SensorScaleVerdict& units = loop.unit().navigator().scale_verdict();
   char refused[96] = "";
   if (units.accel_refused) {
-    std::snprintf(refused, sizeof refused, "NOT ALIGNED: the accelerometer reads %.3g g (its scale?)",
+    std::snprintf(refused, sizeof refused,
+                  "NOT ALIGNED: the accelerometer reads %.3gx gravity and the turns (its scale?)",
                   units.specific_force_over_gravity);
   } else if (units.gyro_refused) {
     std::snprintf(refused, sizeof refused, "NOT ALIGNED: the gyro scatters %.3g rad/s at rest (its scale?)",

@@ -193,8 +193,8 @@ TEST(FlyEmulate, AnAccelerometerAtTheWrongScaleIsRefusedAndSaidSo) {
   const std::string config = write_fly_config(tmp, "fly");
   const ProcessResult r = run_sinu({"fly", "--health-period", "0.001", "--config", config, "--emulate", wrong, "--speed", "0"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("NAV REFUSED: accelerometer reads 0.125 g"), std::string::npos) << r.err.substr(0, 2000);
-  EXPECT_NE(r.err.find("0 solutions, NOT ALIGNED: the accelerometer reads 0.125 g"), std::string::npos)
+  EXPECT_NE(r.err.find("NAV REFUSED: accelerometer reads 0.125x gravity"), std::string::npos) << r.err.substr(0, 2000);
+  EXPECT_NE(r.err.find("0 solutions, NOT ALIGNED: the accelerometer reads 0.125x gravity"), std::string::npos)
       << r.err.substr(r.err.size() > 2000 ? r.err.size() - 2000 : 0);
 }
 

@@ -115,5 +115,69 @@ TEST(SensorScaleCheck, AccelerometerAndFieldAgainstGravityAndTheModel) {
   EXPECT_TRUE(si.field_plausible(500.0, NAN));  // no model: not judged
 }
 
+// A unit restarted in a level turn at 60 deg of bank (35 m/s, 2 g, the
+// velocity turning at g tan(60 deg) / V = 0.49 rad/s; an independent
+// aerobatic flight): judged against gravity alone its 2.0x was refused for
+// the rest of the flight. The GNSS velocity's turn makes the reference 2 g.
+// The same accelerometer in g is still refused, and so it is when a velocity
+// glitch (300 m/s off for one epoch) inflates the reference.
+struct SteepTurn {
+  double accel_unit = 1.0;  // 1 / 9.80665: the accelerometer in g
+  bool glitch = false;
+  SensorScaleCheck c;
+  bool run() {
+    c.configure({});
+    const double V = 35.0, bank = M_PI / 3.0, omega = kG * std::tan(bank) / V;
+    for (int i = 1; i <= 300; ++i) {  // 3 s at 100 Hz, GNSS at 5 Hz
+      const double t = i * kDt;
+      c.add_sample(accel_unit * Eigen::Vector3d(0.0, 0.0, -kG / std::cos(bank)),
+                   Eigen::Vector3d(0.0, omega * std::sin(bank), omega * std::cos(bank)), kDt);
+      if (i % 20 != 0) continue;
+      Eigen::Vector2d v(V * std::cos(omega * t), V * std::sin(omega * t));
+      if (glitch && i == 140) v.x() += 300.0;
+      c.add_gnss_velocity(t, v);
+    }
+    return c.accel_plausible(kG);
+  }
+};
+
+TEST(SensorScaleCheck, ARestartInASteepTurnIsNotAUnitError) {
+  SteepTurn turn;
+  EXPECT_TRUE(turn.run());
+  // The first 0.8 s has no acceleration yet (the first velocity at 0.2 s,
+  // the next 0.6 s later): gravity alone. The mean reference is then
+  // (0.8 x 1 + 2.2 x 2) / 3 = 1.73 g and the accelerometer's 2 g 1.16x of it.
+  EXPECT_NEAR(turn.c.verdict().expected_over_gravity, 1.73, 0.02);
+  EXPECT_NEAR(turn.c.verdict().specific_force_over_gravity, 1.16, 0.02);
+  for (const bool glitch : {false, true}) {
+    SteepTurn in_g;
+    in_g.accel_unit = 1.0 / kG;
+    in_g.glitch = glitch;
+    EXPECT_FALSE(in_g.run()) << "glitch " << glitch;
+    EXPECT_LT(in_g.c.verdict().specific_force_over_gravity, 0.15) << "glitch " << glitch;
+  }
+}
+
+// A loop: NMEA has no vertical velocity, so the pull-up is not in the
+// reference; the band's 2.5x holds its circle's 1.9 g (2.8 g at the bottom,
+// 0.8 g at the top, 35 m/s on a 70-m radius).
+TEST(SensorScaleCheck, ALoopIsWithinTheBand) {
+  SensorScaleCheck c;
+  c.configure({});
+  const double V = 35.0, q = V / 70.0;
+  for (int i = 1; i <= 1257; ++i) {  // one loop, 12.57 s
+    const double theta = q * i * kDt;  // pitch
+    // Body z: centripetal V q towards the centre plus gravity's component.
+    c.add_sample(Eigen::Vector3d(-kG * std::sin(theta), 0.0, -(V * q + kG * std::cos(theta))), Eigen::Vector3d(0, q, 0),
+                 kDt);
+    if (i % 20 == 0) c.add_gnss_velocity(i * kDt, Eigen::Vector2d(V * std::cos(theta), 0.0));
+  }
+  EXPECT_TRUE(c.accel_plausible(kG));
+  // The reference has the loop's horizontal acceleration (V q sin(theta)),
+  // not its vertical one: above 1 g, short of the accelerometer's 1.9 g.
+  EXPECT_GT(c.verdict().expected_over_gravity, 1.2);
+  EXPECT_GT(c.verdict().specific_force_over_gravity, 1.1);
+}
+
 }  // namespace
 }  // namespace sinu::est

@@ -128,6 +128,7 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
   }
   // The units check (estimator/nav/sensor_scale_check.hpp): null where nothing was judged.
   sj["sensor_units"] = {{"specific_force_over_gravity", num(r.scale.specific_force_over_gravity)},
+                        {"expected_over_gravity", num(r.scale.expected_over_gravity)},
                         {"accel_refused", r.scale.accel_refused},
                         {"gyro_std_at_rest_rad_s", num(r.scale.gyro_std_at_rest_rad_s)},
                         {"gyro_refused", r.scale.gyro_refused},

@@ -59,9 +59,11 @@ HealthStatus ReplayResult::health() const {
 std::string ReplayResult::not_aligned_reason() const {
   if (aligned) return "";
   if (scale.accel_refused) {
-    return fmt::format("the accelerometer reads {:.3g} m/s^2 of specific force on average where gravity is {:.4g} "
-                       "m/s^2 ({:.3g}x): imu.csv's ax, ay, az must be m/s^2 (in g they read 0.1x)",
-                       scale.mean_specific_force_m_s2, scale.gravity_m_s2, scale.specific_force_over_gravity);
+    return fmt::format("the accelerometer reads {:.3g} m/s^2 of specific force on average where gravity{} makes "
+                       "{:.4g} m/s^2 ({:.3g}x): imu.csv's ax, ay, az must be m/s^2 (in g they read 0.1x)",
+                       scale.mean_specific_force_m_s2,
+                       scale.expected_over_gravity > 1.005 ? " and the GNSS's turns" : "",
+                       scale.gravity_m_s2 * scale.expected_over_gravity, scale.specific_force_over_gravity);
   }
   if (scale.gyro_refused) {
     return fmt::format("the gyro scatters {:.3g} rad/s while the GNSS and the accelerometer (scatter {:.3g} m/s^2) say "
