@@ -4,11 +4,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "firmware/host/sim/true_motion.hpp"
+
 namespace sinu::sim {
 
 namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kG = 9.80665;
 constexpr double kGroundStill_s = 60.0;
 constexpr double kRotateSpeed_m_s = 22.0;
 constexpr double kTakeoffRoll_s = 14.0;
@@ -30,7 +31,7 @@ void ManoeuvrePlanner::push(const Primitive& p) {
 
 void ManoeuvrePlanner::plan_turn(double bank, double turn, double ramp, double alpha) {
   // Heading turned while banked: rate * (hold + ramp) (half of each ramp counts).
-  const double rate = kG * std::tan(std::abs(bank)) / speed_m_s_;
+  const double rate = coordinated_turn_rate_rad_s(std::abs(bank), speed_m_s_);
   const double hold = std::max(0.0, turn / rate - ramp);
   push({ramp, hold, speed_m_s_, 0.0, bank, alpha, "turn"});
   push({ramp, 2.0, speed_m_s_, 0.0, 0.0, alpha, "roll out"});
@@ -98,7 +99,7 @@ void ManoeuvrePlanner::plan(const PlannerInput& in) {
     plan_turn(rng_.signed_uniform(20.0, 30.0) * kDeg, 2.0 * std::numbers::pi, 3.0, kCruiseAlpha_rad);  // loiter
   } else if (u < 0.67) {
     const double bank = rng_.signed_uniform(20.0, 30.0) * kDeg;  // figure-eight: circle one way, then the other
-    const double rate = kG * std::tan(std::abs(bank)) / speed_m_s_;
+    const double rate = coordinated_turn_rate_rad_s(std::abs(bank), speed_m_s_);
     const double hold = std::max(0.0, 2.0 * std::numbers::pi / rate - 4.0);
     push({3.0, hold, speed_m_s_, 0.0, bank, kCruiseAlpha_rad, "figure-eight"});
     push({5.0, hold, speed_m_s_, 0.0, -bank, kCruiseAlpha_rad, "figure-eight"});

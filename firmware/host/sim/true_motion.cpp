@@ -11,9 +11,13 @@ namespace {
 constexpr double kTurnGravity_m_s2 = 9.80665;  // defines the coordinated turn only
 }  // namespace
 
+double coordinated_turn_rate_rad_s(double bank_rad, double speed_m_s) {
+  return kTurnGravity_m_s2 * std::tan(bank_rad) / speed_m_s;
+}
+
 double heading_rate_rad_s(const ControlValues& c) {
   if (c.speed_m_s < c.min_turn_speed_m_s) return 0.0;
-  return kTurnGravity_m_s2 * std::tan(c.bank_rad) / c.speed_m_s;
+  return coordinated_turn_rate_rad_s(c.bank_rad, c.speed_m_s);
 }
 
 Eigen::Vector3d velocity_ned(const ControlValues& c, double psi) {

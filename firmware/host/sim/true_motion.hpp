@@ -30,7 +30,9 @@ struct TrueMotion {
   Eigen::Vector3d omega_ib_b_rad_s = Eigen::Vector3d::Zero();
 };
 
-/// Coordinated turn: heading rate = g tan(bank) / V (0 below c.min_turn_speed_m_s).
+/// A coordinated turn's heading rate at this bank and speed: g tan(bank) / V.
+double coordinated_turn_rate_rad_s(double bank_rad, double speed_m_s);
+/// The controls' heading rate: the coordinated turn's, 0 below c.min_turn_speed_m_s.
 double heading_rate_rad_s(const ControlValues& c);
 /// NED velocity of ground speed V along heading psi at flight-path angle gamma.
 Eigen::Vector3d velocity_ned(const ControlValues& c, double heading_rad);
