@@ -16,6 +16,7 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
+#include "host_tests/support/dataset_faults.hpp"
 #include "host_tests/support/run_process.hpp"
 #include "host_tests/support/shared_data.hpp"
 #include "host_tests/support/temp_dir.hpp"
@@ -398,6 +399,40 @@ TEST(Diagnose, NamesNothingOnAFlightWithoutAHiddenEffect) {
   EXPECT_FALSE(d.contains("caution")) << "nothing named, nothing to doubt: " << d.dump(1);
   EXPECT_EQ(d["carried_findings"].size(), 0u) << "the configured latency is the simulator's, no hard iron: " << d.dump(1);
   for (const auto& c : d["rounds"][0]["candidates"]) EXPECT_FALSE(c["explains"].get<bool>()) << c.dump();
+}
+
+// What the IMU did not measure is no effect of the unit: 1 s of the
+// accelerometer pegged at 2 g (a hard landing's bump) and a 3-s gap in
+// imu.csv. Diagnose names no effect for them, and says so: the counts in
+// diagnosis.json and a "data:" line (before it, a clipping flight's report
+// never mentioned the clipping).
+TEST(Diagnose, WhatTheImuDidNotMeasureIsToldAndNotNamedAsAnEffect) {
+  TempDir dir;
+  const std::string ds = (dir.path() / "flight").string(), out = (dir.path() / "diag").string();
+  ASSERT_EQ(run_sinu({"simulate", "flight", "--out", ds, "--seed", "9", "--duration", "600"}).exit_code, 0);
+  const double t0 = first_t(ds);
+  ImuClip clip;
+  clip.start_s = t0 + 300.0;
+  clip.duration_s = 1.0;
+  ImuGap gap;
+  gap.start_s = t0 + 400.0;
+  gap.duration_s = 3.0;
+  inject_faults(ds, ds, {clip, gap});
+  const auto r = run_sinu({"diagnose", "--in", ds, "--gps-latency", "0.045", "--rounds", "1", "--accel-range", "2",
+                           "--out", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(out + "/diagnosis.json");
+  const auto d = nlohmann::json::parse(in);
+  EXPECT_EQ(d["missing_effects"].size(), 0u) << d.dump(1);
+  // 40 Hz: 1 s pegged is 40 samples (the range's edge counts as clipped, so
+  // the neighbours of the window may add one or two).
+  EXPECT_GE(d["imu_faults"]["clipped_samples"].get<int>(), 40) << d["imu_faults"].dump();
+  EXPECT_LE(d["imu_faults"]["clipped_samples"].get<int>(), 44) << d["imu_faults"].dump();
+  EXPECT_EQ(d["imu_faults"]["gaps"].get<int>(), 1) << d["imu_faults"].dump();
+  // The interval across the gap: the 3 s removed plus one 25-ms sample period.
+  EXPECT_NEAR(d["imu_faults"]["longest_gap_s"].get<double>(), 3.025, 0.001) << d["imu_faults"].dump();
+  EXPECT_NE(r.out.find("data: the IMU has "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("at full scale"), std::string::npos) << r.out;
 }
 
 double outage_drift(const std::string& summary) {

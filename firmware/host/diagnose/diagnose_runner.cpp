@@ -58,7 +58,7 @@ bool replay_and_score(replay::ReplayOptions opt, est::EffectSet effects, const s
     return false;
   }
   out.stats = stats.stats();
-  out.health = {result.health(), result.counters.resets(), result.counters.lost_total_s};
+  out.health = {result.health(), result.counters};
   out.duration_s = result.duration_s;
   out.series = series.take();
   out.rmse_pos_h_m = or_minus_one(result.rmse_pos_h_m());

@@ -69,11 +69,12 @@ struct CandidateResult {
   }
 };
 
-/// How the solution of one replay fared (the replay's health, resets, time lost).
+/// How the solution of one replay fared: its health, and the counters behind
+/// it (resets, time lost, and what the IMU did not measure: clipped samples,
+/// gaps, dropped samples).
 struct SolutionHealth {
   replay::HealthStatus status = replay::HealthStatus::Ok;
-  std::uint64_t resets = 0;
-  double lost_s = 0.0;
+  est::NavCounters counters;
 };
 
 struct Round {

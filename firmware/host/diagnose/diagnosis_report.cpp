@@ -24,6 +24,7 @@ std::string diagnosis_summary(const DiagnoseOptions& o, const Diagnosis& d) {
   if (const std::string p = process_noise_text(d); !p.empty()) out += "  " + p + "\n";
   out += "  baseline model (" + effect_list(base.model) + "): fits worst in " + worst_cell(base.stats) + "\n";
   if (const std::string h = health_text(base.health); !h.empty()) out += "  baseline solution " + h + "\n";
+  if (const std::string f = imu_faults_text(base.health); !f.empty()) out += "  data: " + f + "\n";
   if (d.bias_walk.named) out += "  bias moved: " + bias_walk_text(d.bias_walk) + "\n";
   else if (!d.model_changed() && d.carried.empty()) {
     out += "  no candidate effect explains the misfit (see report.md for each candidate's score)\n";
@@ -68,6 +69,7 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
        << rmse_text(base.rmse_pos_h_m, "m") << ", attitude " << rmse_text(base.rmse_att_deg, "deg") << ".\n\n";
     if (const std::string h = health_text(base.health); !h.empty())
       md << "**The baseline's solution was " << h << "**: the misfit broke it.\n\n";
+    if (const std::string f = imu_faults_text(base.health); !f.empty()) md << "Data: " << f << ".\n\n";
     md << "| source | components | NIS per component | mean innovation [sigma] | rejected |\n|---|---|---|---|---|\n";
     for (std::size_t k = 0; k < kSources; ++k) {
       const ComponentStats& c = base.stats.source[k];
@@ -170,6 +172,11 @@ bool write_diagnosis(const DiagnoseOptions& o, const Diagnosis& d, std::string& 
         if (r.stats.source[k].count) w[kSourceNames[k]] = r.stats.source[k].lag1();
       return w;
     };
+    // What the IMU did not measure (the baseline's replay; every candidate's reads the same data).
+    const est::NavCounters& c = d.rounds.front().health.counters;
+    j["imu_faults"] = {{"clipped_samples", c.imu_clipped_samples}, {"gaps", c.imu_gaps},
+                       {"longest_gap_s", c.imu_longest_gap_s}, {"dropped_nan", c.imu_invalid},
+                       {"dropped_time", c.imu_non_increasing}};
     j["before"] = {{"rmse_pos_h_m", d.rounds.front().rmse_pos_h_m},
                    {"rmse_att_deg", d.rounds.front().rmse_att_deg},
                    {"nll", d.rounds.front().stats.total_nll()},

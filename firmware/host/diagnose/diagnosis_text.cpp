@@ -226,14 +226,33 @@ std::string bias_walk_text(const BiasWalkFinding& w) {
 std::string health_text(const SolutionHealth& h) {
   switch (h.status) {
     case replay::HealthStatus::Ok: return "";
-    case replay::HealthStatus::Reset: return "reset to GNSS " + std::to_string(h.resets) + " time(s)";
+    case replay::HealthStatus::Reset: return "reset to GNSS " + std::to_string(h.counters.resets()) + " time(s)";
     case replay::HealthStatus::LostAndRecovered:
-      return "lost for " + format_number("%.1f", h.lost_s) + " s, recovered by " + std::to_string(h.resets) +
+      return "lost for " + format_number("%.1f", h.counters.lost_total_s) + " s, recovered by " +
+             std::to_string(h.counters.resets()) +
              " reset(s)";
-    case replay::HealthStatus::Lost: return "LOST at the end of the data (" + format_number("%.1f", h.lost_s) + " s)";
+    case replay::HealthStatus::Lost:
+      return "LOST at the end of the data (" + format_number("%.1f", h.counters.lost_total_s) + " s)";
     case replay::HealthStatus::NotAligned: return "never aligned";
   }
   return "";
+}
+
+std::string imu_faults_text(const SolutionHealth& h) {
+  const est::NavCounters& c = h.counters;
+  const std::uint64_t dropped = c.imu_invalid + c.imu_non_increasing;
+  if (c.imu_clipped_samples == 0 && c.imu_gaps == 0 && dropped == 0) return "";
+  std::string parts;
+  const auto add = [&parts](const std::string& p) { parts += (parts.empty() ? "" : ", ") + p; };
+  if (c.imu_clipped_samples > 0) add(std::to_string(c.imu_clipped_samples) + " sample(s) at full scale");
+  if (c.imu_gaps > 0)
+    add(std::to_string(c.imu_gaps) + " gap(s) (longest " + format_number("%.3g", c.imu_longest_gap_s) + " s)");
+  if (dropped > 0)
+    add(std::to_string(dropped) + " sample(s) dropped (NaN " + std::to_string(c.imu_invalid) + ", time " +
+        std::to_string(c.imu_non_increasing) + ")");
+  return "the IMU has " + parts +
+         ": there it did not measure the motion, the filter widened its noise over it, and a misfit there is no "
+         "effect of the unit (a unit that clips wants a wider full scale: the ICM-20948 has +-16 g, +-2000 deg/s)";
 }
 
 std::string before_after_text(const Round& before, const Round& after) {

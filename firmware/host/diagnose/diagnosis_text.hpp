@@ -59,6 +59,9 @@ std::string bias_walk_text(const BiasWalkFinding& w);
 /// "" for a solution that stayed healthy; else "LOST at the end of the data (120 s)", "reset to
 /// GNSS 3 time(s)", ...: a misfit that broke the solution, said before any figure of it.
 std::string health_text(const SolutionHealth& h);
+/// "" when the IMU measured throughout; else its clipped samples, gaps and
+/// dropped samples, and that a misfit over them is no effect of the unit.
+std::string imu_faults_text(const SolutionHealth& h);
 /// "horizontal RMSE 2.1 m -> 0.9 m, attitude ...; NIS per component gnss_position 1.3 -> 1.0 ...".
 std::string before_after_text(const Round& before, const Round& after);
 
