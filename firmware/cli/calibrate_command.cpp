@@ -86,6 +86,12 @@ int run_calibrate(const CalibrateOptions& o) {
       std::fprintf(stderr, "sinu calibrate: %s: %zu rows without accelerometer/gyro values skipped, %zu gaps in time\n",
                    in.c_str(), session.rows_without_imu, session.gaps);
     }
+    if (session.accel_held > 0) {
+      std::fprintf(stderr,
+                   "sinu calibrate: %s: %zu samples without an accelerometer reading of their own (a slower "
+                   "accelerometer, held): its noise at the shortest averaging times reads low\n",
+                   in.c_str(), session.accel_held);
+    }
     // Held in one attitude: the whole session, as always; in several: the noise
     // models from its longest still segment (the multi-position fit below).
     still.push_back(calibration::find_still_parts(session, run.sessions.size()));

@@ -52,32 +52,48 @@ inline std::string copy_dataset_editing_gps(const std::string& src, const std::s
   return dst;
 }
 
-/// A copy of dataset `src` at `dst` with imu.csv's named columns multiplied
-/// by their factor (empty fields stay empty). Returns dst.
-inline std::string with_scaled_columns(const std::string& src, const std::string& dst,
-                                const std::map<std::string, double>& factor) {
+/// A copy of dataset `src` at `dst` whose imu.csv rows (k from 0, after the
+/// header) are given to `edit` as their fields to change. Returns dst.
+inline std::string copy_dataset_editing_imu(const std::string& src, const std::string& dst,
+                                            const std::function<void(std::size_t, std::vector<std::string>&)>& edit) {
   copy_dataset_except(src, dst, "imu.csv");
   std::ifstream in(src + "/imu.csv");
   std::ofstream out(dst + "/imu.csv");
   std::string line;
   std::getline(in, line);
   out << line << '\n';
-  std::vector<double> scale;
-  std::stringstream header(line);
-  for (std::string name; std::getline(header, name, ',');) scale.push_back(factor.count(name) ? factor.at(name) : 1.0);
-  out.precision(10);
-  while (std::getline(in, line)) {
-    std::stringstream row(line);
-    std::size_t i = 0;
-    for (std::string field; std::getline(row, field, ','); ++i) {
-      if (i > 0) out << ',';
-      if (field.empty() || scale[i] == 1.0) out << field;
-      else out << std::stod(field) * scale[i];
-    }
-    if (!line.empty() && line.back() == ',') out << ',';  // a trailing empty field (no temp)
+  for (std::size_t k = 0; std::getline(in, line); ++k) {
+    std::vector<std::string> fields;
+    std::size_t start = 0;
+    for (std::size_t comma; (comma = line.find(',', start)) != std::string::npos; start = comma + 1)
+      fields.push_back(line.substr(start, comma - start));
+    fields.push_back(line.substr(start));
+    edit(k, fields);
+    for (std::size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << fields[i];
     out << '\n';
   }
   return dst;
+}
+
+/// A copy of dataset `src` at `dst` with imu.csv's named columns multiplied
+/// by their factor (empty fields stay empty). Returns dst.
+inline std::string with_scaled_columns(const std::string& src, const std::string& dst,
+                                       const std::map<std::string, double>& factor) {
+  std::ifstream in(src + "/imu.csv");
+  std::string header;
+  std::getline(in, header);
+  std::vector<double> scale;
+  std::stringstream names(header);
+  for (std::string name; std::getline(names, name, ',');) scale.push_back(factor.count(name) ? factor.at(name) : 1.0);
+  return copy_dataset_editing_imu(src, dst, [&](std::size_t, std::vector<std::string>& fields) {
+    for (std::size_t i = 0; i < fields.size() && i < scale.size(); ++i) {
+      if (fields[i].empty() || scale[i] == 1.0) continue;
+      std::ostringstream v;
+      v.precision(10);
+      v << std::stod(fields[i]) * scale[i];
+      fields[i] = v.str();
+    }
+  });
 }
 
 /// Runs `sinu` with `args` (which hold --out DIR) and returns DIR/summary.json.

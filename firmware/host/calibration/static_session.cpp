@@ -7,6 +7,7 @@
 
 #include "firmware/host/dataset/dataset_paths.hpp"
 #include "firmware/host/dataset/imu_csv.hpp"
+#include "firmware/host/dataset/imu_row_merger.hpp"
 #include "firmware/host/dataset/quantile.hpp"
 
 namespace sinu::calibration {
@@ -58,8 +59,21 @@ bool load_static_session(const std::string& dataset, StaticSession& out, dataset
     return false;
   }
   dataset::ImuRow r;
+  dataset::ImuRowMerger merger;  // rows with part of the IMU into samples
   double t_first = 0.0, t_last = 0.0;
   std::vector<double> times;
+  const auto take = [&](const dataset::ImuReading& s) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      out.imu[i].push_back(s.specific_force_b_m_s2[i]);
+      out.imu[3 + i].push_back(s.angular_rate_b_rad_s[i]);
+    }
+    if (s.has_mag)
+      for (std::size_t i = 0; i < 3; ++i) out.mag[i].push_back(s.mag_b_uT[i]);
+    if (times.empty()) t_first = s.t_s;
+    t_last = s.t_s;
+    times.push_back(t_last);
+  };
+  dataset::ImuReading s;
   for (;;) {
     const dataset::ReadStatus st = reader.next(r.row);
     if (st == dataset::ReadStatus::Error) {
@@ -69,24 +83,13 @@ bool load_static_session(const std::string& dataset, StaticSession& out, dataset
     if (st == dataset::ReadStatus::End) break;
     ++out.rows;
     if (on_rows && out.rows % kProgressEvery == 0) on_rows(out.rows);
-    if (!r.has_accel() || !r.has_gyro()) {
-      ++out.rows_without_imu;
-      continue;
-    }
-    const auto f = r.specific_force_b_m_s2();
-    const auto w = r.angular_rate_b_rad_s();
-    for (std::size_t i = 0; i < 3; ++i) {
-      out.imu[i].push_back(f[i]);
-      out.imu[3 + i].push_back(w[i]);
-    }
-    if (r.has_mag()) {
-      const auto m = r.mag_b_uT();
-      for (std::size_t i = 0; i < 3; ++i) out.mag[i].push_back(m[i]);
-    }
-    if (times.empty()) t_first = r.t_s();
-    t_last = r.t_s();
-    times.push_back(t_last);
+    merger.add(r);
+    while (merger.next(s)) take(s);
   }
+  merger.finish();
+  while (merger.next(s)) take(s);
+  out.rows_without_imu = merger.counts().left_out;
+  out.accel_held = merger.counts().accel_held;
   const std::size_t n = out.imu[0].size();
   if (n < kMinRows) {
     err = dataset::Diagnostic{paths.imu(), 0, 0,

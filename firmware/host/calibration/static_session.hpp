@@ -25,7 +25,8 @@ struct StaticSession {
   double t0_s = 0.0;                         // t of the first row with accelerometer and gyro values
   double duration_s = 0.0;
   std::size_t rows = 0;
-  std::size_t rows_without_imu = 0;          // skipped
+  std::size_t rows_without_imu = 0;          // skipped: a gyro reading before any accelerometer one
+  std::size_t accel_held = 0;                // samples whose specific force an earlier row gave (dataset/imu_row_merger.hpp)
   std::size_t gaps = 0;                      // intervals > 1.5 dt (lost samples)
 };
 

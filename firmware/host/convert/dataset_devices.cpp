@@ -44,17 +44,22 @@ bool DatasetDevices::next_line() {
 }
 
 bool DatasetDevices::read_row() {
-  while (true) {
-    const dataset::ReadStatus s = imu_.next(row_.row);
-    if (s != dataset::ReadStatus::Row) {
-      if (s == dataset::ReadStatus::Error) error_ = imu_.error();
+  // The sensor always converts accel and gyro together: rows with part of
+  // the IMU are merged into whole samples first (dataset/imu_row_merger.hpp).
+  dataset::ImuRow row;
+  while (!merger_.next(reading_)) {
+    if (file_done_) {
       imu_done_ = true;
       return false;
     }
-    // The sensor always converts accel and gyro together: a row without
-    // them cannot be put into registers; it is counted and left out.
-    if (row_.has_accel() && row_.has_gyro()) break;
-    ++skipped_rows_;
+    const dataset::ReadStatus s = imu_.next(row.row);
+    if (s == dataset::ReadStatus::Row) {
+      merger_.add(row);
+      continue;
+    }
+    if (s == dataset::ReadStatus::Error) error_ = imu_.error();
+    file_done_ = true;
+    merger_.finish();
   }
   have_row_ = true;
   return true;
@@ -62,7 +67,7 @@ bool DatasetDevices::read_row() {
 
 hal::TimeNs DatasetDevices::first_time_ns() {
   if (!have_row_ && !imu_done_) read_row();
-  return have_row_ ? seconds_to_ns(row_.t_s()) : 0;
+  return have_row_ ? seconds_to_ns(reading_.t_s) : 0;
 }
 
 hal::EdgeStatus DatasetDevices::wait_rising(hal::TimeNs timeout_ns, hal::TimeNs& edge_time_ns) {
@@ -71,7 +76,7 @@ hal::EdgeStatus DatasetDevices::wait_rising(hal::TimeNs timeout_ns, hal::TimeNs&
   // GPS bytes due before this edge wake the loop first (it reads them at
   // their time, as the board does); nothing due within the timeout (a gap in
   // imu.csv) is a timeout, as on the board.
-  const hal::TimeNs t = seconds_to_ns(row_.t_s());
+  const hal::TimeNs t = seconds_to_ns(reading_.t_s);
   const hal::TimeNs give_up = clock_.now_ns() + timeout_ns;
   if (!gps_done_ && line_ns_ < t && line_ns_ <= give_up) {
     clock_.advance_to_ns(line_ns_);
@@ -83,13 +88,12 @@ hal::EdgeStatus DatasetDevices::wait_rising(hal::TimeNs timeout_ns, hal::TimeNs&
     return hal::EdgeStatus::Timeout;
   }
   have_row_ = false;
-  const dataset::ImuRow& row = row_;
   ++rows_;
   drivers::EmulatedSample sample;
-  sample.specific_force_b_m_s2 = row.specific_force_b_m_s2();
-  sample.angular_rate_b_rad_s = row.angular_rate_b_rad_s();
-  if (row.has_mag()) sample.mag_b_uT = row.mag_b_uT();
-  sample.temp_degC = row.has_temp() ? row.temp_degC() : drivers::EmulatedSample{}.temp_degC;
+  sample.specific_force_b_m_s2 = reading_.specific_force_b_m_s2;
+  sample.angular_rate_b_rad_s = reading_.angular_rate_b_rad_s;
+  if (reading_.has_mag) sample.mag_b_uT = reading_.mag_b_uT;
+  sample.temp_degC = reading_.has_temp ? reading_.temp_degC : drivers::EmulatedSample{}.temp_degC;
   clock_.advance_to_ns(t);
   chip_.load(sample);
   edge_time_ns = t;

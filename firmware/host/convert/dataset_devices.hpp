@@ -13,6 +13,7 @@
 #include "firmware/host/dataset/dataset_paths.hpp"
 #include "firmware/host/dataset/diagnostic.hpp"
 #include "firmware/host/dataset/imu_csv.hpp"
+#include "firmware/host/dataset/imu_row_merger.hpp"
 #include "firmware/host/dataset/nmea_log.hpp"
 #include "hal/gpio_edge.hpp"
 #include "hal/replay/manual_clock.hpp"
@@ -35,8 +36,8 @@ class DatasetDevices final : public hal::GpioEdge, public hal::SerialPort {
   /// A read error in either file (empty if none).
   const dataset::Diagnostic& error() const { return error_; }
   std::uint64_t rows() const { return rows_; }
-  /// Rows without accel or gyro (not convertible to register values).
-  std::uint64_t skipped_rows() const { return skipped_rows_; }
+  /// Rows left out: a gyro reading before any accelerometer one (merger's counts).
+  std::uint64_t skipped_rows() const { return merger_.counts().left_out; }
   /// Time of the first imu.csv row (0 if none).
   hal::TimeNs first_time_ns();
 
@@ -48,13 +49,15 @@ class DatasetDevices final : public hal::GpioEdge, public hal::SerialPort {
   hal::ManualClock& clock_;
   dataset::CsvReader imu_{dataset::kImuSchema};
   dataset::NmeaLogReader gps_;
-  dataset::ImuRow row_;  // read ahead, delivered when no GPS bytes are due before it
+  dataset::ImuRowMerger merger_;
+  dataset::ImuReading reading_;  // read ahead, delivered when no GPS bytes are due before it
   bool have_row_ = false;
   bool has_gps_ = false, imu_done_ = false, gps_done_ = true;
+  bool file_done_ = false;  // imu.csv read to its end (samples may still wait in merger_)
   std::string line_;        // the pending gps.nmea sentence + CR LF
   hal::TimeNs line_ns_ = 0;
   std::size_t line_offset_ = 0;
-  std::uint64_t rows_ = 0, skipped_rows_ = 0;
+  std::uint64_t rows_ = 0;
   dataset::Diagnostic error_;
 };
 

@@ -21,34 +21,33 @@ bool DatasetSource::open(const std::string& dir, std::string& error) {
 bool DatasetSource::run(ReplayFeed& feed, std::string& error) {
   drivers::GpsFix fix;
   dataset::ReadStatus gps_st = has_gps_ ? gps_.next(fix) : dataset::ReadStatus::End;
-  dataset::CsvRow row;
-  dataset::ReadStatus st;
-  while ((st = imu_.next(row)) == dataset::ReadStatus::Row) {
-    const dataset::ImuRow r{row};
-    if (!r.has_accel() || !r.has_gyro()) {
-      ++incomplete_rows_;
-      continue;
-    }
+  const auto deliver = [&](const dataset::ImuReading& reading) {
     est::ImuSample s;
-    s.t_s = r.t_s();
-    const auto f = r.specific_force_b_m_s2();
-    const auto g = r.angular_rate_b_rad_s();
+    s.t_s = reading.t_s;
+    const auto& f = reading.specific_force_b_m_s2;
+    const auto& g = reading.angular_rate_b_rad_s;
     s.specific_force_b_m_s2 = {f[0], f[1], f[2]};
     s.angular_rate_b_rad_s = {g[0], g[1], g[2]};
-    s.has_mag = r.has_mag();
-    if (s.has_mag) {
-      const auto m = r.mag_b_uT();
-      s.mag_b_uT = {m[0], m[1], m[2]};
-    }
-    s.has_temp = r.has_temp();
-    s.temp_degC = s.has_temp ? r.temp_degC() : 0.0;
+    s.has_mag = reading.has_mag;
+    if (s.has_mag) s.mag_b_uT = {reading.mag_b_uT[0], reading.mag_b_uT[1], reading.mag_b_uT[2]};
+    s.has_temp = reading.has_temp;
+    s.temp_degC = s.has_temp ? reading.temp_degC : 0.0;
     while (gps_st == dataset::ReadStatus::Row && fix.arrival_s <= s.t_s) {
       feed.on_fix(fix);
       gps_st = gps_.next(fix);
     }
     feed.on_imu(s);
     imu_end_s_ = s.t_s;
+  };
+  dataset::CsvRow row;
+  dataset::ImuReading reading;
+  dataset::ReadStatus st;
+  while ((st = imu_.next(row)) == dataset::ReadStatus::Row) {
+    merger_.add(dataset::ImuRow{row});
+    while (merger_.next(reading)) deliver(reading);
   }
+  merger_.finish();
+  while (merger_.next(reading)) deliver(reading);
   // Fixes after the last IMU sample are never used; many of them is a clock
   // (or unit) mismatch between the two files, which the summary names.
   if (st != dataset::ReadStatus::Error && gps_st == dataset::ReadStatus::Row) first_fix_after_imu_s_ = fix.arrival_s;
@@ -66,7 +65,10 @@ bool DatasetSource::run(ReplayFeed& feed, std::string& error) {
 
 SourceCounters DatasetSource::counters() const {
   SourceCounters c;
-  c.incomplete_rows = incomplete_rows_;
+  c.incomplete_rows = merger_.counts().left_out;
+  c.rows_folded = merger_.counts().rows_folded;
+  c.accel_held = merger_.counts().accel_held;
+  c.accel_interpolated = merger_.counts().accel_interpolated;
   c.corrupt_sentences = has_gps_ ? gps_.corrupt() : 0;
   c.time_anomalies = imu_.time_anomalies();
   c.non_finite_rows = imu_.non_finite_rows();

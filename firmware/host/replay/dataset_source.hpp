@@ -4,6 +4,7 @@
 #include "firmware/host/dataset/csv_table.hpp"
 #include "firmware/host/dataset/dataset_paths.hpp"
 #include "firmware/host/dataset/imu_csv.hpp"
+#include "firmware/host/dataset/imu_row_merger.hpp"
 #include "firmware/host/dataset/nmea_log.hpp"
 #include "firmware/host/replay/replay_source.hpp"
 
@@ -25,7 +26,7 @@ class DatasetSource final : public ReplaySource {
   bool has_gps_ = false;
   std::uint64_t fixes_after_imu_ = 0;
   double first_fix_after_imu_s_ = 0.0, imu_end_s_ = 0.0;
-  std::uint64_t incomplete_rows_ = 0;
+  dataset::ImuRowMerger merger_;  // rows with part of the IMU into samples
 };
 
 }  // namespace sinu::replay

@@ -170,7 +170,9 @@ nlohmann::json summary_json(const ReplayOptions& opt, const ReplayResult& r) {
                 {"dropped_outage", r.gnss.dropped_outage},
                 {"dropped_period", r.gnss.dropped_period}, {"late", c.gnss_late}, {"overflow", c.gnss_overflow}};
   sj["corrupt_sentences"] = r.source.corrupt_sentences;
-  sj["imu"] = {{"incomplete_rows", r.source.incomplete_rows}, {"time_anomalies", r.source.time_anomalies},
+  sj["imu"] = {{"incomplete_rows", r.source.incomplete_rows}, {"rows_folded", r.source.rows_folded},
+               {"accel_interpolated_samples", r.source.accel_interpolated},
+               {"accel_held_samples", r.source.accel_held}, {"time_anomalies", r.source.time_anomalies},
                {"non_finite_rows", r.source.non_finite_rows},
                {"first_anomaly", r.source.first_anomaly.empty() ? json(nullptr) : json(r.source.first_anomaly)},
                {"non_increasing", c.imu_non_increasing}, {"gaps", c.imu_gaps}, {"gap_total_s", c.imu_gap_total_s},

@@ -25,7 +25,10 @@ class ReplayFeed {
 };
 
 struct SourceCounters {
-  std::uint64_t incomplete_rows = 0;    // imu.csv rows without accel or gyro (left out)
+  std::uint64_t incomplete_rows = 0;    // imu.csv rows with a gyro reading before any accelerometer one (left out)
+  std::uint64_t rows_folded = 0;        // imu.csv rows without a gyro reading, folded into the next sample
+  std::uint64_t accel_interpolated = 0;  // samples whose specific force is interpolated between rows (dataset/imu_row_merger.hpp)
+  std::uint64_t accel_held = 0;         // samples whose specific force an earlier row gave, held
   std::uint64_t corrupt_sentences = 0;  // NMEA sentences failing checksum/fields, plus skipped gps.nmea lines
   std::uint64_t time_anomalies = 0;     // imu.csv rows whose time did not increase (passed on, dropped there)
   std::uint64_t non_finite_rows = 0;    // imu.csv rows with a NaN/inf value (passed on, dropped there)
