@@ -86,11 +86,13 @@ int run_calibrate(const CalibrateOptions& o) {
       std::fprintf(stderr, "sinu calibrate: %s: %zu rows without accelerometer/gyro values skipped, %zu gaps in time\n",
                    in.c_str(), session.rows_without_imu, session.gaps);
     }
-    if (session.accel_held > 0) {
+    // More than 1 % (not the last row's): the accelerometer's noise is not its own at the shortest times.
+    if ((session.accel_held + session.accel_interpolated) * 100 > session.imu[0].size()) {
       std::fprintf(stderr,
-                   "sinu calibrate: %s: %zu samples without an accelerometer reading of their own (a slower "
-                   "accelerometer, held): its noise at the shortest averaging times reads low\n",
-                   in.c_str(), session.accel_held);
+                   "sinu calibrate: %s: %zu samples without an accelerometer reading of their own (%zu "
+                   "interpolated between rows, %zu held): its noise at the shortest averaging times reads low\n",
+                   in.c_str(), session.accel_held + session.accel_interpolated, session.accel_interpolated,
+                   session.accel_held);
     }
     // Held in one attitude: the whole session, as always; in several: the noise
     // models from its longest still segment (the multi-position fit below).

@@ -90,6 +90,7 @@ bool load_static_session(const std::string& dataset, StaticSession& out, dataset
   while (merger.next(s)) take(s);
   out.rows_without_imu = merger.counts().left_out;
   out.accel_held = merger.counts().accel_held;
+  out.accel_interpolated = merger.counts().accel_interpolated;
   const std::size_t n = out.imu[0].size();
   if (n < kMinRows) {
     err = dataset::Diagnostic{paths.imu(), 0, 0,

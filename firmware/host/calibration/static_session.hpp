@@ -27,6 +27,7 @@ struct StaticSession {
   std::size_t rows = 0;
   std::size_t rows_without_imu = 0;          // skipped: a gyro reading before any accelerometer one
   std::size_t accel_held = 0;                // samples whose specific force an earlier row gave (dataset/imu_row_merger.hpp)
+  std::size_t accel_interpolated = 0;        // samples whose specific force is interpolated between two rows'
   std::size_t gaps = 0;                      // intervals > 1.5 dt (lost samples)
 };
 
