@@ -67,7 +67,9 @@ void Navigator::init(const NavigatorConfig& cfg, NavObserver* observer, ImuPrefi
   have_prev_ = have_raw_ = mag_started_ = in_timeout_ = false;
   last_gap_t_s_ = disturbed_t_s_ = -1e300;
   horizon_now_s_ = cfg.horizon_s;
-  raw_period_s_ = period_s_ = horizontal_accel_m_s2_ = accel_diff_var_ = gyro_diff_var_ = 0.0;
+  raw_period_.reset();
+  period_.reset();
+  horizontal_accel_m_s2_ = accel_diff_var_ = gyro_diff_var_ = 0.0;
   clip_until_t_s_.fill(kNever);
   last_clip_t_s_.fill(kNever);
   clip_run_.fill(0);
@@ -100,17 +102,13 @@ void Navigator::push_imu(const ImuSample& raw) {
       return;
     case ScreenVerdict::Keep: break;
   }
-  if (have_raw_) {  // nominal raw period: gaps and repeats do not move it
-    const double dt = raw.t_s - last_raw_t_s_;
-    if (raw_period_s_ == 0.0 || dt < 0.5 * raw_period_s_) raw_period_s_ = dt;
-    else if (dt < 2.0 * raw_period_s_) raw_period_s_ += 0.02 * (dt - raw_period_s_);
-  }
+  if (have_raw_) raw_period_.add(raw.t_s - last_raw_t_s_);  // nominal raw period: gaps and repeats do not move it
   have_raw_ = true;
   last_raw_t_s_ = raw.t_s;
   if (s.clipped_axes) {
     ++counters_.imu_clipped_samples;
     // A clipped input reaches every prefilter output up to its delay later.
-    const double reach = s.t_s + prefilter_->delay_samples() * raw_period_s_ + 1e-9;
+    const double reach = s.t_s + prefilter_->delay_samples() * raw_period_.seconds() + 1e-9;
     for (std::size_t a = 0; a < kSensorAxes; ++a)
       if ((static_cast<unsigned>(s.clipped_axes) >> a) & 1u) clip_until_t_s_[a] = reach;
   }
@@ -165,9 +163,8 @@ void Navigator::process(const ImuSample& s) {
     return;
   }
   const double dt = s.t_s - prev_.t_s;
-  if (period_s_ == 0.0 || dt < 0.5 * period_s_) period_s_ = dt;
-  else if (dt < 2.0 * period_s_) period_s_ += 0.02 * (dt - period_s_);
-  if (dt > cfg_.gap_periods * period_s_) {
+  period_.add(dt);
+  if (dt > cfg_.gap_periods * period_.seconds()) {
     ++counters_.imu_gaps;
     counters_.imu_gap_total_s += dt;
     counters_.imu_longest_gap_s = std::max(counters_.imu_longest_gap_s, dt);
@@ -184,7 +181,7 @@ void Navigator::process(const ImuSample& s) {
   }
 
   alignment_.add_imu(s, dt);  // after a course alignment, its check (check_course)
-  const bool gap = dt > cfg_.gap_periods * period_s_;
+  const bool gap = dt > cfg_.gap_periods * period_.seconds();
   if (gap) last_gap_t_s_ = s.t_s;
   const BodyRates r0 = filter_.compensate(prev_);
   const BodyRates r1 = filter_.compensate(s);
@@ -222,8 +219,8 @@ void Navigator::process(const ImuSample& s) {
     accel_diff_var_ += a * ((s.specific_force_b_m_s2 - prev_.specific_force_b_m_s2).squaredNorm() / 3.0 - accel_diff_var_);
     gyro_diff_var_ += a * ((s.angular_rate_b_rad_s - prev_.angular_rate_b_rad_s).squaredNorm() / 3.0 - gyro_diff_var_);
     // per-sample variance var(diff)/2, as a density: sigma^2 * sample period
-    in.accel_white_floor_m_s2_rthz = std::sqrt(0.5 * accel_diff_var_ * period_s_);
-    in.gyro_white_floor_rad_s_rthz = std::sqrt(0.5 * gyro_diff_var_ * period_s_);
+    in.accel_white_floor_m_s2_rthz = std::sqrt(0.5 * accel_diff_var_ * period_.seconds());
+    in.gyro_white_floor_rad_s_rthz = std::sqrt(0.5 * gyro_diff_var_ * period_.seconds());
   }
   predict_.add(in);
   if (predict_.pending_s() >= cfg_.covariance_period_s - 1e-9) predict_.flush(filter_);
@@ -343,7 +340,7 @@ void Navigator::widen_for_imu_errors(const ImuSample& s, double dt) {
   // biases and raise the flag.
   const std::uint8_t clipped = s.clipped_axes | prev_.clipped_axes;
   const std::uint8_t touched = clipped | s.clip_reach_axes | prev_.clip_reach_axes;
-  const bool gap = dt > cfg_.gap_periods * period_s_;
+  const bool gap = dt > cfg_.gap_periods * period_.seconds();
   if (touched || gap) predict_.flush(filter_);  // the extra noise belongs after this interval
   const Eigen::Matrix3d C = nav_.C_nb();
   Eigen::Vector3d var_f = Eigen::Vector3d::Zero(), var_w = Eigen::Vector3d::Zero();

@@ -33,6 +33,7 @@
 #include "estimator/nav/sensor_scale_check.hpp"
 #include "estimator/nav/nav_health.hpp"
 #include "estimator/nav/noise_adapter.hpp"
+#include "estimator/nav/sample_period.hpp"
 #include "estimator/nav/stillness.hpp"
 #include "estimator/nav/vehicle_detector.hpp"
 #include "estimator/nav/warm_start.hpp"
@@ -288,7 +289,8 @@ class Navigator {
   bool fuse(AidingSource src, const Measurement& m, double t_meas);
   /// The longest horizon the configuration and the IMU buffer allow.
   double horizon_limit_s() const {
-    const double buffer_s = period_s_ > 0.0 ? static_cast<double>(kImuBufferCapacity - 2) * period_s_ : cfg_.horizon_s;
+    const double period_s = period_.seconds();
+    const double buffer_s = period_s > 0.0 ? static_cast<double>(kImuBufferCapacity - 2) * period_s : cfg_.horizon_s;
     return std::max(cfg_.horizon_s, std::min(cfg_.max_horizon_s, buffer_s));
   }
   /// A field sample within mag_timeout_s (the magnetometer states on).
@@ -296,7 +298,7 @@ class Navigator {
   /// The magnetometer holds the heading: live, with the field's direction known (the declination prior).
   bool mag_sees_heading(double t_s) const { return mag_live(t_s) && std::isfinite(alignment_result_.declination_rad); }
   /// The largest latency the longest horizon can serve (two IMU periods of margin).
-  double max_gps_latency_s() const { return std::max(0.0, horizon_limit_s() - 2.0 * period_s_ - 0.01); }
+  double max_gps_latency_s() const { return std::max(0.0, horizon_limit_s() - 2.0 * period_.seconds() - 0.01); }
   void recover(RecoveryAction action, const GnssObservation& z, double dt_back, double t_meas);
   /// Effect e's states into frozen_: no update moves them (until frozen_ is next rebuilt).
   void freeze(Effect e);
@@ -383,12 +385,13 @@ class Navigator {
   StateVec dx_;
   PredictAccumulator predict_;
   // Raw-stream bookkeeping (before the prefilter's delay).
-  double last_raw_t_s_ = 0.0, raw_period_s_ = 0.0;
+  double last_raw_t_s_ = 0.0;
+  SamplePeriod raw_period_;
   bool have_raw_ = false;
   std::array<double, kSensorAxes> clip_until_t_s_{};     // prefilter outputs up to here carry a raw clip
   std::array<double, kSensorAxes> last_clip_t_s_{};      // latest processed clipped sample, per axis
   std::array<int, kSensorAxes> clip_run_{};              // consecutive clipped intervals, per axis
-  double period_s_ = 0.0;                                // nominal interval of the processed stream
+  SamplePeriod period_;                                  // nominal interval of the processed stream
   double last_gap_t_s_ = -1e300;                         // end of the latest IMU gap
   double disturbed_t_s_ = -1e300;                        // the latest disturbed()
   double horizon_now_s_ = 0.0;                           // the horizon in use (grows with the latency estimate)

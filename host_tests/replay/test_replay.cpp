@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -75,6 +76,34 @@ TEST(Replay, AccelerometerAndGyroOnRowsOfTheirOwnAreOneImu) {
     EXPECT_LT((*s)["rmse"]["pos_h_m"].get<double>(), 1.05 * whole["rmse"]["pos_h_m"].get<double>());
     EXPECT_LT((*s)["rmse"]["att_deg"].get<double>(), 1.10 * whole["rmse"]["att_deg"].get<double>());
   }
+}
+
+// A logger that stamps each IMU sample at receipt: the simulated flight's
+// 40-Hz stamps moved by up to +-10 ms (40 % of the period). Before session
+// 37 the nominal period collapsed to the shortest interval and most
+// intervals were taken for gaps (the aerobatic probe at 100 Hz, +-4 ms:
+// 16,097 gaps, position RMSE 0.74 -> 1.17 m).
+TEST(Replay, JitteredImuStampsAreNoGaps) {
+  TempDir dir;
+  const std::string ds = simulate(dir, "f", 600);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> jitter(-0.010, 0.010);
+  const std::string jittered = copy_dataset_editing_imu(ds, (dir.path() / "jittered").string(), [&](std::size_t, auto& f) {
+    char t[32];
+    std::snprintf(t, sizeof t, "%.6f", std::stod(f[0]) + jitter(rng));
+    f[0] = t;
+  });
+  const auto whole = replay_summary({"replay", "--in", ds, "--gps-latency", "0.045", "--out", (dir.path() / "r").string()});
+  const auto j = replay_summary({"replay", "--in", jittered, "--gps-latency", "0.045", "--out", (dir.path() / "rj").string()});
+  EXPECT_EQ(j["imu"]["gaps"].get<int>(), 0) << j["imu"].dump();
+  EXPECT_EQ(j["health"]["status"], "ok");
+  // The samples are integrated over their stamped, not their true,
+  // intervals: an error that telescopes (each stamp's error enters two
+  // intervals with opposite signs), which the GNSS absorbs: measured 1.237
+  // -> 1.245 m; 5 %. (Attitude is no test here: the solution is scored
+  // against the truth at the stamped times, so the jitter itself reads as
+  // rate x 10 ms of error: 0.53 -> 0.54-0.63 deg with the draw.)
+  EXPECT_LT(j["rmse"]["pos_h_m"].get<double>(), 1.05 * whole["rmse"]["pos_h_m"].get<double>());
 }
 
 TEST(Replay, WritesNavInnovationsAndSummary) {
