@@ -32,6 +32,23 @@ TEST(RateTracker, AJitteredTenHertzReceiverIsTenHertz) {
   EXPECT_EQ(r.gaps(), 0u);
 }
 
+TEST(RateTracker, AnImuStampedAtReceiptIsOneHundredHertzWithoutGaps) {
+  // +-4 ms on every stamp of a 100-Hz IMU: intervals of 2-18 ms. 1.5 times
+  // the median read 7,585 gaps and 107 Hz on 69,000 stamps; three
+  // interquartile ranges (~4.7 ms) beyond the median hold all of them. A
+  // dropped sample (20 +- 8 ms) among them is a gap only where it is longer
+  // than that (24 ms): not told apart from the jitter, as it cannot be.
+  RateTracker r;
+  std::uint32_t x = 777u;
+  for (int i = 0; i < 69000; ++i) {
+    x = x * 1664525u + 1013904223u;
+    r.add(100.0 + i * 0.01 + 0.008 * (static_cast<double>(x >> 8) / 16777216.0 - 0.5));
+  }
+  r.finish();
+  EXPECT_EQ(r.gaps(), 0u);
+  EXPECT_NEAR(r.nominal_rate_hz(), 100.0, 0.01);
+}
+
 TEST(RateTracker, AGapIsCountedAndLeftOutOfTheRate) {
   // 30 s without fixes in a 5-Hz stream: one gap of 30.2 s, the rate still 5 Hz.
   const RateTracker r = jittered(5.0, 0.01, 3000, 1000, 150);

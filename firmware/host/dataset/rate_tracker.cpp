@@ -5,11 +5,12 @@
 namespace sinu::dataset {
 
 namespace {
-constexpr double kGapFactor = 1.5;  // an interval this many nominal periods long is a gap
+constexpr double kGapMargin = 0.5;  // of the nominal period: beyond it, a gap
+constexpr double kGapSpread = 3.0;  // interquartile ranges: beyond them, a gap
 }
 
 void RateTracker::classify(double dt, double t_end) {
-  if (dt <= kGapFactor * period_) {
+  if (dt <= gap_above_s_) {
     ++regular_;
     regular_sum_s_ += dt;
   } else {
@@ -40,9 +41,10 @@ void RateTracker::add(double t) {
 void RateTracker::finish() {
   if (period_ > 0.0 || warm_n_ == 0) return;
   std::array<double, kWarmup> sorted = warm_dt_;
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(warm_n_ / 2),
-                   sorted.begin() + static_cast<long>(warm_n_));
+  std::sort(sorted.begin(), sorted.begin() + static_cast<long>(warm_n_));
   period_ = sorted[warm_n_ / 2];
+  const double iqr = sorted[3 * warm_n_ / 4] - sorted[warm_n_ / 4];
+  gap_above_s_ = period_ + std::max(kGapMargin * period_, kGapSpread * iqr);
   for (std::size_t i = 0; i < warm_n_; ++i) classify(warm_dt_[i], warm_t_[i]);
 }
 
