@@ -64,10 +64,11 @@ int dataset_to_raw(const ConvertOptions& o, const drivers::Icm20948Config& cfg) 
     std::fprintf(stderr, "sinu convert: %s\n", writer.error().c_str());
     return kExitFailure;
   }
-  std::printf("%s: %llu imu rows (%llu without accel/gyro left out) -> %llu samples, %llu sentences, %llu fixes; "
-              "%llu records\n",
-              o.out.c_str(), static_cast<unsigned long long>(data.rows()),
-              static_cast<unsigned long long>(data.skipped_rows()), static_cast<unsigned long long>(sink.samples),
+  std::printf("%s: %llu imu samples (%llu rows without a gyro folded in, %llu before any accelerometer left out) -> "
+              "%llu samples, %llu sentences, %llu fixes; %llu records\n",
+              o.out.c_str(), static_cast<unsigned long long>(data.samples()),
+              static_cast<unsigned long long>(data.folded_rows()), static_cast<unsigned long long>(data.skipped_rows()),
+              static_cast<unsigned long long>(sink.samples),
               static_cast<unsigned long long>(sink.sentences), static_cast<unsigned long long>(sink.fixes),
               static_cast<unsigned long long>(writer.records()));
   return kExitOk;

@@ -35,7 +35,10 @@ class DatasetDevices final : public hal::GpioEdge, public hal::SerialPort {
   hal::SerialResult write(std::span<const std::uint8_t> bytes) override { return {hal::SerialStatus::Ok, bytes.size(), 0}; }
   /// A read error in either file (empty if none).
   const dataset::Diagnostic& error() const { return error_; }
-  std::uint64_t rows() const { return rows_; }
+  /// Whole IMU samples loaded into the chip (rows with part of the IMU merged).
+  std::uint64_t samples() const { return rows_; }
+  /// Rows without a gyro reading, folded into the next sample.
+  std::uint64_t folded_rows() const { return merger_.counts().rows_folded; }
   /// Rows left out: a gyro reading before any accelerometer one (merger's counts).
   std::uint64_t skipped_rows() const { return merger_.counts().left_out; }
   /// Time of the first imu.csv row (0 if none).
