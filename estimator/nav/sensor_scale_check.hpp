@@ -104,8 +104,8 @@ class SensorScaleCheck {
   /// before (shorter differences are mostly noise; longer, a gap).
   void add_gnss_velocity(double t_s, const Eigen::Vector2d& v_ne_m_s) {
     if (!v_ne_m_s.allFinite()) return;
-    const double dt = t_s - anchor_t_s_;
-    if (dt < kMinDifference_s) return;  // also the first (NaN)
+    const double dt = t_s - anchor_t_s_;  // NaN for the first: no difference, it only anchors
+    if (dt < kMinDifference_s) return;
     if (dt <= kMaxDifference_s) {
       // Capped: a velocity glitch must not excuse a wrong unit.
       const double a_g = std::min((v_ne_m_s - anchor_v_).norm() / dt / kStandardG, kMaxLoad_g);

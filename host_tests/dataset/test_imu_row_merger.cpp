@@ -112,3 +112,14 @@ TEST(ImuRowMerger, ASilentAccelerometerIsHeldAfterAShortWait) {
   }
   EXPECT_EQ(m.counts().accel_held, 40u);
 }
+
+// Stamps out of order (a live stream's glitch, dropped and counted by the
+// navigator): the specific force stays between the two readings, never
+// extrapolated from a weight outside 0..1.
+TEST(ImuRowMerger, StampsOutOfOrderDoNotExtrapolate) {
+  ImuRowMerger m;
+  const auto out = merge(m, {row(1.0, 1.0, 1.0), row(0.5, NAN, 2.0), row(1.01, 3.0, NAN), row(1.02, 5.0, 3.0)});
+  ASSERT_EQ(out.size(), 3u);
+  EXPECT_EQ(out[1].t_s, 0.5);
+  EXPECT_EQ(out[1].specific_force_b_m_s2[0], 1.0);  // clamped to the reading before (weight -49 unclamped)
+}

@@ -1,5 +1,7 @@
 #include "firmware/host/dataset/imu_row_merger.hpp"
 
+#include <algorithm>
+
 namespace sinu::dataset {
 
 void ImuRowMerger::push_ready(const ImuReading& s) {
@@ -22,7 +24,8 @@ void ImuRowMerger::release_waiting(const Accel* after) {
     ImuReading s = waiting_[k];
     const double span = after ? after->t_s - last_accel_.t_s : 0.0;
     if (after && span > 0.0) {
-      const double w = (s.t_s - last_accel_.t_s) / span;
+      // Clamped: stamps out of order (dropped and counted downstream) must not extrapolate.
+      const double w = std::clamp((s.t_s - last_accel_.t_s) / span, 0.0, 1.0);
       for (std::size_t i = 0; i < 3; ++i)
         s.specific_force_b_m_s2[i] = last_accel_.f[i] + w * (after->f[i] - last_accel_.f[i]);
       ++counts_.accel_interpolated;
