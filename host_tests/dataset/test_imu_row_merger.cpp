@@ -26,9 +26,9 @@ ImuRow row(double t, double accel, double gyro, double mag = NAN, double temp = 
   return r;
 }
 
-std::vector<ImuReading> merge(ImuRowMerger& m, const std::vector<ImuRow>& rows) {
-  std::vector<ImuReading> out;
-  ImuReading s;
+std::vector<sinu::est::ImuSample> merge(ImuRowMerger& m, const std::vector<ImuRow>& rows) {
+  std::vector<sinu::est::ImuSample> out;
+  sinu::est::ImuSample s;
   for (const ImuRow& r : rows) {
     m.add(r);
     while (m.next(s)) out.push_back(s);

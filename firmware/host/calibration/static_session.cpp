@@ -62,18 +62,18 @@ bool load_static_session(const std::string& dataset, StaticSession& out, dataset
   dataset::ImuRowMerger merger;  // rows with part of the IMU into samples
   double t_first = 0.0, t_last = 0.0;
   std::vector<double> times;
-  const auto take = [&](const dataset::ImuReading& s) {
-    for (std::size_t i = 0; i < 3; ++i) {
-      out.imu[i].push_back(s.specific_force_b_m_s2[i]);
-      out.imu[3 + i].push_back(s.angular_rate_b_rad_s[i]);
+  const auto take = [&](const est::ImuSample& s) {
+    for (Eigen::Index i = 0; i < 3; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      out.imu[k].push_back(s.specific_force_b_m_s2(i));
+      out.imu[3 + k].push_back(s.angular_rate_b_rad_s(i));
+      if (s.has_mag) out.mag[k].push_back(s.mag_b_uT(i));
     }
-    if (s.has_mag)
-      for (std::size_t i = 0; i < 3; ++i) out.mag[i].push_back(s.mag_b_uT[i]);
     if (times.empty()) t_first = s.t_s;
     t_last = s.t_s;
     times.push_back(t_last);
   };
-  dataset::ImuReading s;
+  est::ImuSample s;
   for (;;) {
     const dataset::ReadStatus st = reader.next(r.row);
     if (st == dataset::ReadStatus::Error) {

@@ -43,11 +43,11 @@ bool DatasetDevices::next_line() {
   return true;
 }
 
-bool DatasetDevices::read_row() {
+bool DatasetDevices::read_sample() {
   // The sensor always converts accel and gyro together: rows with part of
   // the IMU are merged into whole samples first (dataset/imu_row_merger.hpp).
   dataset::ImuRow row;
-  while (!merger_.next(reading_)) {
+  while (!merger_.next(next_sample_)) {
     if (file_done_) {
       imu_done_ = true;
       return false;
@@ -61,22 +61,22 @@ bool DatasetDevices::read_row() {
     file_done_ = true;
     merger_.finish();
   }
-  have_row_ = true;
+  have_sample_ = true;
   return true;
 }
 
 hal::TimeNs DatasetDevices::first_time_ns() {
-  if (!have_row_ && !imu_done_) read_row();
-  return have_row_ ? seconds_to_ns(reading_.t_s) : 0;
+  if (!have_sample_ && !imu_done_) read_sample();
+  return have_sample_ ? seconds_to_ns(next_sample_.t_s) : 0;
 }
 
 hal::EdgeStatus DatasetDevices::wait_rising(hal::TimeNs timeout_ns, hal::TimeNs& edge_time_ns) {
   if (imu_done_) return hal::EdgeStatus::Closed;
-  if (!have_row_ && !read_row()) return hal::EdgeStatus::Closed;
+  if (!have_sample_ && !read_sample()) return hal::EdgeStatus::Closed;
   // GPS bytes due before this edge wake the loop first (it reads them at
   // their time, as the board does); nothing due within the timeout (a gap in
   // imu.csv) is a timeout, as on the board.
-  const hal::TimeNs t = seconds_to_ns(reading_.t_s);
+  const hal::TimeNs t = seconds_to_ns(next_sample_.t_s);
   const hal::TimeNs give_up = clock_.now_ns() + timeout_ns;
   if (!gps_done_ && line_ns_ < t && line_ns_ <= give_up) {
     clock_.advance_to_ns(line_ns_);
@@ -87,13 +87,14 @@ hal::EdgeStatus DatasetDevices::wait_rising(hal::TimeNs timeout_ns, hal::TimeNs&
     edge_time_ns = give_up;
     return hal::EdgeStatus::Timeout;
   }
-  have_row_ = false;
-  ++rows_;
+  have_sample_ = false;
+  ++samples_;
   drivers::EmulatedSample sample;
-  sample.specific_force_b_m_s2 = reading_.specific_force_b_m_s2;
-  sample.angular_rate_b_rad_s = reading_.angular_rate_b_rad_s;
-  if (reading_.has_mag) sample.mag_b_uT = reading_.mag_b_uT;
-  sample.temp_degC = reading_.has_temp ? reading_.temp_degC : drivers::EmulatedSample{}.temp_degC;
+  const auto array = [](const Eigen::Vector3d& v) { return std::array<double, 3>{v.x(), v.y(), v.z()}; };
+  sample.specific_force_b_m_s2 = array(next_sample_.specific_force_b_m_s2);
+  sample.angular_rate_b_rad_s = array(next_sample_.angular_rate_b_rad_s);
+  if (next_sample_.has_mag) sample.mag_b_uT = array(next_sample_.mag_b_uT);
+  sample.temp_degC = next_sample_.has_temp ? next_sample_.temp_degC : drivers::EmulatedSample{}.temp_degC;
   clock_.advance_to_ns(t);
   chip_.load(sample);
   edge_time_ns = t;

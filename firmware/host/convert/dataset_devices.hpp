@@ -36,7 +36,7 @@ class DatasetDevices final : public hal::GpioEdge, public hal::SerialPort {
   /// A read error in either file (empty if none).
   const dataset::Diagnostic& error() const { return error_; }
   /// Whole IMU samples loaded into the chip (rows with part of the IMU merged).
-  std::uint64_t samples() const { return rows_; }
+  std::uint64_t samples() const { return samples_; }
   /// Rows without a gyro reading, folded into the next sample.
   std::uint64_t folded_rows() const { return merger_.counts().rows_folded; }
   /// Rows left out: a gyro reading before any accelerometer one (merger's counts).
@@ -46,21 +46,21 @@ class DatasetDevices final : public hal::GpioEdge, public hal::SerialPort {
 
  private:
   bool next_line();
-  bool read_row();
+  bool read_sample();
 
   drivers::EmulatedIcm20948& chip_;
   hal::ManualClock& clock_;
   dataset::CsvReader imu_{dataset::kImuSchema};
   dataset::NmeaLogReader gps_;
   dataset::ImuRowMerger merger_;
-  dataset::ImuReading reading_;  // read ahead, delivered when no GPS bytes are due before it
-  bool have_row_ = false;
+  est::ImuSample next_sample_;  // read ahead, delivered when no GPS bytes are due before it
+  bool have_sample_ = false;
   bool has_gps_ = false, imu_done_ = false, gps_done_ = true;
   bool file_done_ = false;  // imu.csv read to its end (samples may still wait in merger_)
   std::string line_;        // the pending gps.nmea sentence + CR LF
   hal::TimeNs line_ns_ = 0;
   std::size_t line_offset_ = 0;
-  std::uint64_t rows_ = 0;
+  std::uint64_t samples_ = 0;
   dataset::Diagnostic error_;
 };
 

@@ -23,17 +23,12 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <Eigen/Core>
 
+#include "estimator/ins/imu_sample.hpp"
 #include "firmware/host/dataset/imu_csv.hpp"
 
 namespace sinu::dataset {
-
-struct ImuReading {
-  double t_s = 0.0;
-  std::array<double, 3> specific_force_b_m_s2{}, angular_rate_b_rad_s{}, mag_b_uT{};
-  bool has_mag = false, has_temp = false;
-  double temp_degC = 0.0;
-};
 
 struct ImuMergeCounts {
   std::uint64_t rows_folded = 0;         // rows without a gyro reading: their field, temperature, accelerometer used
@@ -52,23 +47,23 @@ class ImuRowMerger {
   /// reading take the last one (held).
   void finish();
   /// The next complete sample, in file order; false when none is ready.
-  bool next(ImuReading& out);
+  bool next(est::ImuSample& out);
   const ImuMergeCounts& counts() const { return counts_; }
 
  private:
   struct Accel {
     double t_s = 0.0;
-    std::array<double, 3> f{};
+    Eigen::Vector3d f = Eigen::Vector3d::Zero();
   };
   void release_waiting(const Accel* after);
-  void push_ready(const ImuReading& s);
+  void push_ready(const est::ImuSample& s);
 
-  ImuReading pending_;          // the field and temperature for the next gyro row
+  est::ImuSample pending_;      // the field and temperature for the next gyro row
   Accel last_accel_;            // the latest accelerometer reading
   bool have_accel_ = false;
-  std::array<ImuReading, kMaxWaiting> waiting_{};  // gyro rows waiting for the next accelerometer reading
+  std::array<est::ImuSample, kMaxWaiting> waiting_{};  // gyro rows waiting for the next accelerometer reading
   std::size_t n_waiting_ = 0;
-  std::array<ImuReading, kMaxWaiting + 1> ready_{};  // released, in order
+  std::array<est::ImuSample, kMaxWaiting + 1> ready_{};  // released, in order
   std::size_t ready_head_ = 0, n_ready_ = 0;
   ImuMergeCounts counts_;
 };

@@ -21,17 +21,7 @@ bool DatasetSource::open(const std::string& dir, std::string& error) {
 bool DatasetSource::run(ReplayFeed& feed, std::string& error) {
   drivers::GpsFix fix;
   dataset::ReadStatus gps_st = has_gps_ ? gps_.next(fix) : dataset::ReadStatus::End;
-  const auto deliver = [&](const dataset::ImuReading& reading) {
-    est::ImuSample s;
-    s.t_s = reading.t_s;
-    const auto& f = reading.specific_force_b_m_s2;
-    const auto& g = reading.angular_rate_b_rad_s;
-    s.specific_force_b_m_s2 = {f[0], f[1], f[2]};
-    s.angular_rate_b_rad_s = {g[0], g[1], g[2]};
-    s.has_mag = reading.has_mag;
-    if (s.has_mag) s.mag_b_uT = {reading.mag_b_uT[0], reading.mag_b_uT[1], reading.mag_b_uT[2]};
-    s.has_temp = reading.has_temp;
-    s.temp_degC = s.has_temp ? reading.temp_degC : 0.0;
+  const auto deliver = [&](const est::ImuSample& s) {
     while (gps_st == dataset::ReadStatus::Row && fix.arrival_s <= s.t_s) {
       feed.on_fix(fix);
       gps_st = gps_.next(fix);
@@ -40,14 +30,14 @@ bool DatasetSource::run(ReplayFeed& feed, std::string& error) {
     imu_end_s_ = s.t_s;
   };
   dataset::CsvRow row;
-  dataset::ImuReading reading;
+  est::ImuSample sample;
   dataset::ReadStatus st;
   while ((st = imu_.next(row)) == dataset::ReadStatus::Row) {
     merger_.add(dataset::ImuRow{row});
-    while (merger_.next(reading)) deliver(reading);
+    while (merger_.next(sample)) deliver(sample);
   }
   merger_.finish();
-  while (merger_.next(reading)) deliver(reading);
+  while (merger_.next(sample)) deliver(sample);
   // Fixes after the last IMU sample are never used; many of them is a clock
   // (or unit) mismatch between the two files, which the summary names.
   if (st != dataset::ReadStatus::Error && gps_st == dataset::ReadStatus::Row) first_fix_after_imu_s_ = fix.arrival_s;
