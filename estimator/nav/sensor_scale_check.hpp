@@ -41,6 +41,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "estimator/earth/wgs84.hpp"
 #include "estimator/nav/imu_scatter.hpp"
 
 namespace sinu::est {
@@ -108,7 +109,7 @@ class SensorScaleCheck {
     if (dt < kMinDifference_s) return;
     if (dt <= kMaxDifference_s) {
       // Capped: a velocity glitch must not excuse a wrong unit.
-      const double a_g = std::min((v_ne_m_s - anchor_v_).norm() / dt / kStandardG, kMaxLoad_g);
+      const double a_g = std::min((v_ne_m_s - anchor_v_).norm() / dt / wgs84::kStandardGravity, kMaxLoad_g);
       load_ = std::sqrt(1.0 + a_g * a_g);
       load_age_s_ = 0.0;
     }
@@ -158,7 +159,6 @@ class SensorScaleCheck {
   bool refused() const { return verdict_.accel_refused || verdict_.gyro_refused; }
 
  private:
-  static constexpr double kStandardG = 9.80665;
   static constexpr double kMinDifference_s = 0.5, kMaxDifference_s = 2.0;
   static constexpr double kLoadMaxAge_s = 2.0;  // a reference this old is none: gravity alone
   static constexpr double kMaxLoad_g = 4.0;  // beyond any UAV's sustained turn
