@@ -17,17 +17,21 @@ constexpr double kMinLeg_m_s = 3.0, kMaxLeg_m_s = 8.0;
 constexpr double kTiltPerSpeed_rad = 0.6 * kDeg;  // nose down per m/s of horizontal speed
 constexpr double kTurnRamp_s = 2.0, kHeightRamp_s = 3.0;
 
+// pitch = gamma + alpha (true_motion.cpp): a level body on any flight path has
+// alpha = -gamma; then tilted nose down into its horizontal speed.
+double alpha_rad(double speed_m_s, double gamma_rad) {
+  return -kTiltPerSpeed_rad * speed_m_s * std::cos(gamma_rad) - gamma_rad;
+}
+
 // Stop, turn the track down, descend at kDescentRate_m_s, stop; and a margin.
 double landing_s(double agl_m) {
   return 5.0 + 3.0 + std::max(0.0, agl_m - kLandedAgl_m) / kDescentRate_m_s + 3.0 + 20.0;
 }
 }  // namespace
 
-// pitch = gamma + alpha (true_motion.cpp): a level body on any flight path has alpha = -gamma.
 Primitive ManoeuvrePlanner::multirotor(double ramp_s, double hold_s, double speed_m_s, double gamma_rad,
                                        double bank_rad, const char* name) const {
-  const double tilt = -kTiltPerSpeed_rad * speed_m_s * std::cos(gamma_rad);
-  return {ramp_s, hold_s, speed_m_s, gamma_rad, bank_rad, tilt - gamma_rad, name};
+  return {ramp_s, hold_s, speed_m_s, gamma_rad, bank_rad, alpha_rad(speed_m_s, gamma_rad), name};
 }
 
 void ManoeuvrePlanner::plan_multirotor(const PlannerInput& in) {
@@ -74,7 +78,7 @@ void ManoeuvrePlanner::plan_multirotor(const PlannerInput& in) {
   } else if (u < 0.62) {
     const double bank = rng_.signed_uniform(5.0, 15.0) * kDeg;
     const double turn = rng_.uniform(60.0, 180.0) * kDeg;
-    plan_turn(bank, turn, kTurnRamp_s, multirotor(0.0, 0.0, speed_m_s_, 0.0, 0.0, "").alpha_rad);
+    plan_turn(bank, turn, kTurnRamp_s, alpha_rad(speed_m_s_, 0.0));
   } else if (u < 0.72) {
     push(multirotor(3.0, rng_.uniform(5.0, 20.0), 0.0, 0.0, 0.0, "hover"));
   } else if (u < 0.86) {
